@@ -1,0 +1,65 @@
+#include "protocol/message_json.hpp"
+
+#include <gtest/gtest.h>
+
+#include "protocol/binary_codec.hpp"
+#include "protocol/errors.hpp"
+#include "protocol/interfaces.hpp"
+#include "protocol/messages/all.hpp"
+
+namespace playerkit::protocol {
+namespace {
+
+using nlohmann::json;
+
+Message laser_message() {
+  LaserData scan;
+  scan.min_angle = -9000;
+  scan.max_angle = 9000;
+  scan.resolution = 100;
+  scan.range_res = 1;
+  scan.range_count = 181;
+  for (std::size_t i = 0; i < 181; ++i) scan.ranges[i] = static_cast<std::uint16_t>(1000 + i);
+  Message m;
+  m.header = make_header(MessageType::kData, {kLaserCode, 0}, {1086000000, 250000}, {1086000000, 200000});
+  m.payload = encode(scan);
+  m.header.size = static_cast<std::uint32_t>(m.payload.size());
+  return m;
+}
+
+TEST(MessageJson, LaserDataRoundTripsExactly) {
+  const Message m = laser_message();
+  const json j = message_to_json(m);
+  EXPECT_EQ(j["type"], "data");
+  EXPECT_EQ(j["device"], "laser");
+  EXPECT_EQ(j["index"], 0);
+  EXPECT_DOUBLE_EQ(j["time"].get<double>(), 1086000000.25);
+  EXPECT_EQ(j["data"]["ranges"].size(), 181u);
+  const Message back = message_from_json(json::parse(j.dump()));
+  EXPECT_EQ(back, m);
+}
+
+TEST(MessageJson, RequestsCarryTheirName) {
+  Message req;
+  req.header = make_header(MessageType::kRequest, {kLaserCode, 0}, {}, {});
+  req.payload = {kLaserGetGeom};
+  req.header.size = 1;
+  const json j = message_to_json(req);
+  EXPECT_EQ(j["request"], "get-geom");
+  EXPECT_EQ(message_from_json(j), req);
+
+  const Message from_name = message_from_json(
+      json::parse(R"({"type":"req","device":"position","request":"set-odom","data":{"x":5}})"));
+  EXPECT_EQ(from_name.payload.size(), 13u);
+  EXPECT_EQ(from_name.payload[0], kPositionSetOdomReq);
+}
+
+TEST(MessageJson, ClearErrors) {
+  EXPECT_THROW(message_from_json(json::parse(R"({"device":"laser"})")), JsonError);
+  EXPECT_THROW(message_from_json(json::parse(R"({"type":"data","device":"lazer"})")), JsonError);
+  EXPECT_THROW(message_from_json(json::parse(R"({"type":"dta","device":"laser"})")), JsonError);
+  EXPECT_THROW(message_from_json(json::parse(R"({"type":"req","device":"laser","request":"fly"})")), JsonError);
+}
+
+}  // namespace
+}  // namespace playerkit::protocol
