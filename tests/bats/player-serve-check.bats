@@ -1,0 +1,56 @@
+#!/usr/bin/env bats
+# player-serve --check: configuration validation from the command line.
+
+load helpers
+
+@test "--check lists the devices of a valid configuration and exits 0" {
+  run "$player_serve" --check "$repo_root/data/config/post-hoc-localization.cfg"
+  [ "$status" -eq 0 ]
+  [[ "${lines[0]}" == *"post-hoc-localization.cfg: 3 devices, served on port 6665" ]]
+  [[ "$output" =~ localize:0\ +driver\ amcl ]]
+  [[ "$output" == *'map_file "intel-lab-map.pgm"'* ]]
+}
+
+@test "--check shows robot names and always-on devices" {
+  run "$player_serve" --check "$repo_root/data/config/messaging.cfg"
+  [ "$status" -eq 0 ]
+  [[ "$output" =~ mcom:0\ +driver\ lifomcom,\ robot\ mailbox ]]
+  run "$player_serve" --check "$repo_root/data/config/record.cfg"
+  [[ "$output" =~ null:0\ +driver\ writelog,\ always\ on ]]
+}
+
+@test "--check -p changes the port of devices outside robot sections" {
+  run "$player_serve" --check -p 7000 "$repo_root/data/config/replay.cfg"
+  [ "$status" -eq 0 ]
+  [[ "${lines[0]}" == *"served on port 7000" ]]
+}
+
+@test "a broken configuration is reported as file:line:col and exits 2" {
+  cfg="$BATS_TEST_TMPDIR/broken.cfg"
+  printf 'position:0 (driver "readlog")\nlazer:1 ()\n' > "$cfg"
+  run "$player_serve" --check "$cfg"
+  [ "$status" -eq 2 ]
+  [[ "$output" == "$cfg:2:1: unknown interface 'lazer'"* ]]
+}
+
+@test "a missing configuration file is an error naming the file, exit 2" {
+  run "$player_serve" --check "$BATS_TEST_TMPDIR/nope.cfg"
+  [ "$status" -eq 2 ]
+  [[ "$output" == *"nope.cfg"* ]]
+}
+
+@test "no configuration file is a usage error, exit 2" {
+  run "$player_serve"
+  [ "$status" -eq 2 ]
+  [[ "$output" == *"CONFIG is required"* ]]
+}
+
+@test "--help shows examples and exit codes; --version names the protocol" {
+  run "$player_serve" --help
+  [ "$status" -eq 0 ]
+  [[ "$output" == *"Examples:"* ]]
+  [[ "$output" == *"Exit status"* ]]
+  run "$player_serve" --version
+  [ "$status" -eq 0 ]
+  [[ "$output" == *"Player protocol 1.5"* ]]
+}
