@@ -1,0 +1,28 @@
+#pragma once
+// Reading config files from disk and splicing `include "file"` statements into
+// the token stream, as 1.5 did: the included tokens are parsed as if they had
+// been written in place of the statement, so an included file may hold
+// defines, devices or just properties.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "config/token.hpp"
+
+namespace playerkit::config {
+
+// The tokens of `text` (the contents of `file`) with every include statement
+// replaced by the tokens of the named file, recursively. A relative name is
+// resolved against the directory of the file holding the statement; a name
+// starting with '/' or '~' is used as is. The statement must be alone on its
+// line: `include "name"`. Throws ConfigError, pointing at the file name, when
+// the file cannot be read or is already being read (an include cycle).
+std::vector<Token> tokenize_with_includes(std::string_view text, const std::string& file);
+
+// The whole contents of a regular file, or nullopt if it cannot be read.
+std::optional<std::string> read_text_file(const std::filesystem::path& path);
+
+}  // namespace playerkit::config
