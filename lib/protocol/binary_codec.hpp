@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -57,6 +58,64 @@ void read_value(const std::uint8_t*& in, V& value) {
   }
 }
 
+// A count field that disagrees with the elements it counts: larger than its
+// array, or (for sized tails) different from the tail's length.
+struct CountProblem {
+  std::string field;  // path below the top struct: "poses.pose_count" style, e.g. "msg.bytes"
+  std::size_t count = 0;
+  std::size_t capacity = 0;
+  bool must_equal = false;
+};
+
+template <class V>
+std::optional<CountProblem> find_count_problem(const V& value, const std::string& prefix);
+
+template <class E>
+std::optional<CountProblem> find_in_elements(const E* elements, std::size_t n, const std::string& path) {
+  if constexpr (WireStruct<E> || is_std_array_v<E>) {
+    for (std::size_t i = 0; i < n; ++i) {
+      if (auto p = find_count_problem(elements[i], path + "[" + std::to_string(i) + "]")) return p;
+    }
+  }
+  return std::nullopt;
+}
+
+template <class V>
+std::optional<CountProblem> find_count_problem(const V& value, const std::string& prefix) {
+  if constexpr (is_std_array_v<V>) {
+    return find_in_elements(value.data(), value.size(), prefix);
+  } else if constexpr (WireStruct<V>) {
+    std::optional<CountProblem> problem;
+    for_each_field<V>([&](const auto& d) {
+      if (problem) return;
+      using D = std::remove_cvref_t<decltype(d)>;
+      const auto& member = value.*(d.member);
+      const std::string path = prefix.empty() ? std::string(d.name) : prefix + "." + std::string(d.name);
+      if constexpr (is_counted_field_v<D>) {
+        const auto count = static_cast<std::size_t>(value.*(d.count));
+        if (count > member.size()) {
+          problem = CountProblem{path, count, member.size(), false};
+          return;
+        }
+        problem = find_in_elements(member.data(), count, path);
+      } else if constexpr (is_tail_field_v<D>) {
+        if (d.count != nullptr && static_cast<std::size_t>(value.*(d.count)) != member.size()) {
+          problem = CountProblem{path, static_cast<std::size_t>(value.*(d.count)), member.size(), true};
+          return;
+        }
+        problem = find_in_elements(member.data(), member.size(), path);
+      } else {
+        problem = find_count_problem(member, path);
+      }
+    });
+    return problem;
+  } else {
+    (void)value;
+    (void)prefix;
+    return std::nullopt;
+  }
+}
+
 template <WireStruct T, class D>
 std::size_t encoded_field_size(const T& value, const D& d) {
   if constexpr (is_counted_field_v<D>) {
@@ -97,6 +156,12 @@ std::size_t encoded_size(const T& value) {
 // Appends the wire form of value to out.
 template <WireStruct T>
 void encode_to(const T& value, std::vector<std::uint8_t>& out) {
+  if (const auto problem = detail::find_count_problem(value, "")) {
+    throw EncodeError(std::string(T::kWireName) + ": field '" + problem->field + "': count " +
+                      std::to_string(problem->count) +
+                      (problem->must_equal ? " differs from the " : " exceeds the ") +
+                      std::to_string(problem->capacity) + " elements present");
+  }
   const std::size_t start = out.size();
   out.resize(start + encoded_size(value));
   std::uint8_t* cursor = out.data() + start;
@@ -142,8 +207,16 @@ T decode(std::span<const std::uint8_t> payload) {
       constexpr std::size_t element_size = wire_size_of<Element>();
       const std::size_t bytes = remaining();
       if (bytes % element_size != 0) throw DecodeError::ragged(T::kWireName, d.name, element_size, bytes);
-      member.resize(bytes / element_size);
+      std::size_t present = bytes / element_size;
+      std::size_t keep = present;
+      if (d.count != nullptr) {
+        // A sized tail may arrive padded to the full struct; only `count` elements are data.
+        keep = static_cast<std::size_t>(value.*(d.count));
+        if (keep > present) throw DecodeError::count_mismatch(T::kWireName, d.name, keep, present);
+      }
+      member.resize(keep);
       for (auto& element : member) detail::read_value(cursor, element);
+      cursor += (present - keep) * element_size;
     } else if constexpr (is_counted_field_v<D>) {
       using Element = typename std::remove_cvref_t<decltype(member)>::value_type;
       constexpr std::size_t element_size = wire_size_of<Element>();
@@ -172,16 +245,14 @@ T decode(std::span<const std::uint8_t> payload) {
     }
   });
 
-  // Counts of arrays the wire always carries in full: checked once every field is
-  // read, because some counts come after their array (wifi link_count).
-  for_each_field<T>([&](const auto& d) {
-    using D = std::remove_cvref_t<decltype(d)>;
-    if constexpr (is_counted_field_v<D>) {
-      constexpr std::size_t capacity = std::tuple_size_v<std::remove_cvref_t<decltype(value.*(d.member))>>;
-      const auto count = static_cast<std::size_t>(value.*(d.count));
-      if (count > capacity) throw DecodeError::bad_count(T::kWireName, d.name, count, capacity);
+  // Counts are checked once every field is read, because some come after their
+  // array (wifi link_count), and nested structs have counts of their own.
+  if (const auto problem = detail::find_count_problem(value, "")) {
+    if (problem->must_equal) {
+      throw DecodeError::count_mismatch(T::kWireName, problem->field, problem->count, problem->capacity);
     }
-  });
+    throw DecodeError::bad_count(T::kWireName, problem->field, problem->count, problem->capacity);
+  }
   return value;
 }
 

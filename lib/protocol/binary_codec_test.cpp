@@ -54,9 +54,12 @@ TEST(BinaryCodec, OversizedPayloadIsRejected) {
 
 TEST(BinaryCodec, CountBeyondCapacityIsRejectedEvenWhenCountComesAfterItsArray) {
   WifiData wifi;
-  wifi.link_count = 17;  // links[16] precedes link_count on the wire
-  const auto bytes = encode(wifi);
-  EXPECT_EQ(bytes.size(), 658u);
+  wifi.link_count = 16;
+  auto bytes = encode(wifi);
+  ASSERT_EQ(bytes.size(), 658u);
+  bytes[609] = 17;  // link_count (offset 608, uint16) follows links[16] on the wire
+  wifi.link_count = 17;
+  EXPECT_THROW((void)encode(wifi), EncodeError);
   try {
     (void)decode<WifiData>(bytes);
     FAIL() << "accepted link_count 17";

@@ -40,4 +40,11 @@ DecodeError DecodeError::bad_count(std::string_view struct_name, std::string_vie
               " elements it can hold"};
 }
 
+DecodeError DecodeError::count_mismatch(std::string_view struct_name, std::string_view field_name,
+                                        std::size_t count, std::size_t present) {
+  return {struct_name, field_name, count, present,
+          std::string(struct_name) + ": field '" + std::string(field_name) + "': its count says " +
+              std::to_string(count) + " elements, the payload holds " + std::to_string(present)};
+}
+
 }  // namespace playerkit::protocol

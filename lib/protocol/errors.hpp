@@ -28,6 +28,10 @@ class DecodeError : public std::runtime_error {
   static DecodeError bad_count(std::string_view struct_name, std::string_view field_name,
                                std::size_t count, std::size_t capacity);
 
+  // "player_camera_data_t: field 'image': its count says 7 elements, the payload holds 6"
+  static DecodeError count_mismatch(std::string_view struct_name, std::string_view field_name,
+                                    std::size_t count, std::size_t present);
+
   const std::string& struct_name() const { return struct_name_; }
   const std::string& field_name() const { return field_name_; }
   std::size_t expected() const { return expected_; }

@@ -21,6 +21,11 @@
 //                                       (localize hypotheses: 14 + 88 * n bytes)
 //   tail(name, &T::vec, nominal, max)   last field; as many elements as the payload
 //                                       holds (blobfinder blobs, comms bytes)
+//   sized_tail(name, &T::vec, &T::n, nominal, max)
+//                                       a tail of `n` elements, the count field
+//                                       preceding it; a payload padded beyond `n`
+//                                       (the full C struct) is accepted, the padding
+//                                       dropped (camera image_size)
 
 #include <array>
 #include <cstddef>
@@ -48,12 +53,13 @@ struct CountedField {
   bool wire_carries_count_only;  // true for counted_tail
 };
 
-template <class Owner, class Element>
+template <class Owner, class Element, class Count = std::uint32_t>
 struct TailField {
   std::string_view name;
   std::vector<Element> Owner::*member;
   std::size_t nominal_count;  // the element count the spec's struct size assumes
   std::size_t max_count;
+  Count Owner::*count = nullptr;  // a field that must equal the element count, if any
 };
 
 template <class Owner, class Member>
@@ -79,7 +85,17 @@ template <class Owner, class Element>
 constexpr TailField<Owner, Element> tail(std::string_view name,
                                          std::vector<Element> Owner::*member,
                                          std::size_t nominal_count, std::size_t max_count) {
-  return {name, member, nominal_count, max_count};
+  return {name, member, nominal_count, max_count, nullptr};
+}
+
+// A tail whose length another field states (camera: image_size).
+template <class Owner, class Element, class Count>
+constexpr TailField<Owner, Element, Count> sized_tail(std::string_view name,
+                                                      std::vector<Element> Owner::*member,
+                                                      Count Owner::*count,
+                                                      std::size_t nominal_count,
+                                                      std::size_t max_count) {
+  return {name, member, nominal_count, max_count, count};
 }
 
 // A struct that travels on the wire: it names its C struct, states the spec's size
@@ -103,8 +119,8 @@ inline constexpr bool is_counted_field_v<CountedField<O, E, N, C>> = true;
 
 template <class F>
 inline constexpr bool is_tail_field_v = false;
-template <class O, class E>
-inline constexpr bool is_tail_field_v<TailField<O, E>> = true;
+template <class O, class E, class C>
+inline constexpr bool is_tail_field_v<TailField<O, E, C>> = true;
 
 // Calls fn(descriptor) for each field of T, in wire order.
 template <WireStruct T, class Fn>

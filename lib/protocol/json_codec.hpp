@@ -8,10 +8,11 @@
 //  * values are in wire units (mm, 0.01 deg, ...), exactly as on the wire;
 //  * counted arrays show only their `count` elements; when parsing, a missing count
 //    is taken from the array's length;
-//  * text fields are strings; bytes above 0x7F map to U+0080..U+00FF so any byte
-//    sequence survives a round trip;
+//  * text fields are strings up to their first NUL (what follows a NUL is padding);
+//    bytes above 0x7F map to U+0080..U+00FF so any text survives a round trip;
 //  * fields missing from the JSON are zero; unknown fields are an error.
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <set>
@@ -92,6 +93,21 @@ std::size_t array_from_json(const nlohmann::json& j, Element* elements, std::siz
   return j.size();
 }
 
+// The name of the plain field of T stored at `member`.
+template <WireStruct T, class M>
+std::string_view field_name_of(M T::*member) {
+  std::string_view name;
+  for_each_field<T>([&](const auto& d) {
+    using D = std::remove_cvref_t<decltype(d)>;
+    if constexpr (!is_counted_field_v<D> && !is_tail_field_v<D>) {
+      if constexpr (std::is_same_v<decltype(d.member), M T::*>) {
+        if (d.member == member) name = d.name;
+      }
+    }
+  });
+  return name;
+}
+
 template <WireStruct T>
 void struct_from_json(const nlohmann::json& j, T& out, const std::string& path) {
   if (!j.is_object()) throw_json_type(path, "an object", j);
@@ -124,20 +140,13 @@ void struct_from_json(const nlohmann::json& j, T& out, const std::string& path) 
   // A count left out of the JSON follows the length of the array it counts.
   for_each_field<T>([&](const auto& d) {
     using D = std::remove_cvref_t<decltype(d)>;
-    if constexpr (is_counted_field_v<D>) {
+    if constexpr (is_counted_field_v<D> || is_tail_field_v<D>) {
       const auto array = j.find(std::string(d.name));
-      if (array == j.end()) return;
-      for_each_field<T>([&](const auto& other) {
-        using O = std::remove_cvref_t<decltype(other)>;
-        if constexpr (!is_counted_field_v<O> && !is_tail_field_v<O>) {
-          if constexpr (std::is_same_v<decltype(other.member), decltype(d.count)>) {
-            if (other.member == d.count && !j.contains(std::string(other.name))) {
-              using Count = std::remove_cvref_t<decltype(out.*(d.count))>;
-              out.*(d.count) = static_cast<Count>(array->size());
-            }
-          }
-        }
-      });
+      if (array == j.end() || d.count == nullptr) return;
+      if (!j.contains(std::string(field_name_of<T>(d.count)))) {
+        using Count = std::remove_cvref_t<decltype(out.*(d.count))>;
+        out.*(d.count) = static_cast<Count>(array->size());
+      }
     }
   });
 }
@@ -152,11 +161,13 @@ void value_from_json(const nlohmann::json& j, V& out, const std::string& path) {
   } else if constexpr (is_fixed_string_v<V>) {
     if (!j.is_string()) throw_json_type(path, "a string", j);
     const std::string bytes = utf8_to_latin1(j.get_ref<const std::string&>(), path);
-    if (bytes.size() >= V::kCapacity) {
+    if (bytes.size() > V::kCapacity) {
       throw JsonError(path + ": text of " + std::to_string(bytes.size()) +
-                      " characters does not fit (at most " + std::to_string(V::kCapacity - 1) + ")");
+                      " characters does not fit (at most " + std::to_string(V::kCapacity) + ")");
     }
-    out.assign(bytes);
+    // Filling the whole field leaves no NUL, exactly as a decoded full field was.
+    out.bytes.fill('\0');
+    std::copy(bytes.begin(), bytes.end(), out.bytes.begin());
   } else {
     struct_from_json(j, out, path);
   }

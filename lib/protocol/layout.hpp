@@ -33,8 +33,8 @@ constexpr FieldBytes field_bytes(const CountedField<O, E, N, C>& d) {
   return {d.wire_carries_count_only ? 0 : full, full, full};
 }
 
-template <class O, class E>
-constexpr FieldBytes field_bytes(const TailField<O, E>& d) {
+template <class O, class E, class C>
+constexpr FieldBytes field_bytes(const TailField<O, E, C>& d) {
   return {0, d.nominal_count * wire_size_of<E>(), d.max_count * wire_size_of<E>()};
 }
 

@@ -35,7 +35,7 @@ struct CameraData {
                       field("height", &CameraData::height),
                       field("depth", &CameraData::depth),
                       field("image_size", &CameraData::image_size),
-                      tail("image", &CameraData::image, 1228800, kCameraImageSize)};
+                      sized_tail("image", &CameraData::image, &CameraData::image_size, 1228800, kCameraImageSize)};
   }
   friend bool operator==(const CameraData&, const CameraData&) = default;
 };

@@ -11,6 +11,7 @@
 
 #include "protocol/fields.hpp"
 #include "protocol/fixed_string.hpp"
+#include "protocol/messages/idar.hpp"
 
 namespace playerkit::protocol {
 
