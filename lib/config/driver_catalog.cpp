@@ -16,7 +16,8 @@ constexpr std::string_view kDrivers[] = {
     "camerav4l",       // default driver of camera (wire-format.md §4)
     "cmucam2",         // 7.5
     "cmvision",        // 7.6
-    "er1_position",    // 7.7
+    "er1",             // 7.7 (the name the 1.5 source registers)
+    "er1_position",    // 7.7 (the manual's name)
     "festival",        // 7.8
     "fixedtones",      // 7.9
     "flockofbirds",    // 7.10
