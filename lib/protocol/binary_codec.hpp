@@ -13,6 +13,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "protocol/byte_order.hpp"
@@ -67,15 +68,34 @@ struct CountProblem {
   bool must_equal = false;
 };
 
+// Whether V holds a struct with fields of its own to check (nothing to walk for
+// plain integers and text, which keeps the check cheap on hot decode paths).
+template <class V>
+constexpr bool holds_structs() {
+  if constexpr (is_std_array_v<V>) {
+    return holds_structs<typename V::value_type>();
+  } else {
+    return WireStruct<V>;
+  }
+}
+
+inline std::string join_path(const std::string& prefix, std::string_view name) {
+  return prefix.empty() ? std::string(name) : prefix + "." + std::string(name);
+}
+
 template <class V>
 std::optional<CountProblem> find_count_problem(const V& value, const std::string& prefix);
 
 template <class E>
 std::optional<CountProblem> find_in_elements(const E* elements, std::size_t n, const std::string& path) {
-  if constexpr (WireStruct<E> || is_std_array_v<E>) {
+  if constexpr (holds_structs<E>()) {
     for (std::size_t i = 0; i < n; ++i) {
       if (auto p = find_count_problem(elements[i], path + "[" + std::to_string(i) + "]")) return p;
     }
+  } else {
+    (void)elements;
+    (void)n;
+    (void)path;
   }
   return std::nullopt;
 }
@@ -90,22 +110,23 @@ std::optional<CountProblem> find_count_problem(const V& value, const std::string
       if (problem) return;
       using D = std::remove_cvref_t<decltype(d)>;
       const auto& member = value.*(d.member);
-      const std::string path = prefix.empty() ? std::string(d.name) : prefix + "." + std::string(d.name);
+      using Member = std::remove_cvref_t<decltype(member)>;
       if constexpr (is_counted_field_v<D>) {
         const auto count = static_cast<std::size_t>(value.*(d.count));
         if (count > member.size()) {
-          problem = CountProblem{path, count, member.size(), false};
-          return;
+          problem = CountProblem{join_path(prefix, d.name), count, member.size(), false};
+        } else if constexpr (holds_structs<typename Member::value_type>()) {
+          problem = find_in_elements(member.data(), count, join_path(prefix, d.name));
         }
-        problem = find_in_elements(member.data(), count, path);
       } else if constexpr (is_tail_field_v<D>) {
         if (d.count != nullptr && static_cast<std::size_t>(value.*(d.count)) != member.size()) {
-          problem = CountProblem{path, static_cast<std::size_t>(value.*(d.count)), member.size(), true};
-          return;
+          problem = CountProblem{join_path(prefix, d.name), static_cast<std::size_t>(value.*(d.count)),
+                                 member.size(), true};
+        } else if constexpr (holds_structs<typename Member::value_type>()) {
+          problem = find_in_elements(member.data(), member.size(), join_path(prefix, d.name));
         }
-        problem = find_in_elements(member.data(), member.size(), path);
-      } else {
-        problem = find_count_problem(member, path);
+      } else if constexpr (holds_structs<Member>()) {
+        problem = find_count_problem(member, join_path(prefix, d.name));
       }
     });
     return problem;
