@@ -1,27 +1,14 @@
 #include "config/section_type.hpp"
 
-#include <charconv>
 #include <optional>
 #include <vector>
 
 #include "config/closest_name.hpp"
 #include "config/errors.hpp"
+#include "protocol/device_address.hpp"
 
 namespace playerkit::config {
 namespace {
-
-// Digits only, no sign or spaces: "laser:1x" is a mistake, not index 1 as atoi
-// would have it.
-std::optional<std::uint16_t> parse_decimal_u16(std::string_view text) {
-  if (text.empty()) return std::nullopt;
-  for (const char c : text) {
-    if (c < '0' || c > '9') return std::nullopt;
-  }
-  std::uint16_t value = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
-  return value;
-}
 
 std::vector<std::string_view> declarable_interface_names() {
   std::vector<std::string_view> names;
@@ -39,7 +26,7 @@ RobotType parse_robot(std::string_view type, std::string_view rest, const Source
                       "robot section without a port: auto-assigning ports is not "
                       "supported (write robot:<port> or robot:<port>:<name>)");
   }
-  const auto port = parse_decimal_u16(port_text);
+  const auto port = protocol::parse_decimal_u16(port_text);
   if (!port || *port == 0) {
     throw ConfigError(where, "invalid port '" + std::string(port_text) + "' in '" +
                                  std::string(type) + "' (expected a number from 1 to 65535)");
@@ -74,7 +61,7 @@ std::variant<RobotType, DeviceType> parse_section_type(std::string_view type,
   }
   DeviceType device{info, 0};
   if (colon != std::string_view::npos) {
-    const auto index = parse_decimal_u16(rest);
+    const auto index = protocol::parse_decimal_u16(rest);
     if (!index) {
       throw ConfigError(where, "invalid index '" + std::string(rest) + "' in '" +
                                    std::string(type) + "' (expected a number from 0 to 65535)");

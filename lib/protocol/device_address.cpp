@@ -5,9 +5,8 @@
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::protocol {
-namespace {
-
-std::optional<std::uint16_t> parse_u16(std::string_view text) {
+std::optional<std::uint16_t> parse_decimal_u16(std::string_view text) {
+  // from_chars on an unsigned type takes neither sign nor leading spaces.
   std::uint16_t value = 0;
   const auto* end = text.data() + text.size();
   const auto [ptr, ec] = std::from_chars(text.data(), end, value);
@@ -15,21 +14,19 @@ std::optional<std::uint16_t> parse_u16(std::string_view text) {
   return value;
 }
 
-}  // namespace
-
 std::optional<DeviceAddress> parse_device_address(std::string_view text) {
   const auto colon = text.find(':');
   const std::string_view name = text.substr(0, colon);
   DeviceAddress address;
   if (const auto* info = find_interface(name)) {
     address.interface = info->code;
-  } else if (const auto code = parse_u16(name)) {
+  } else if (const auto code = parse_decimal_u16(name)) {
     address.interface = *code;
   } else {
     return std::nullopt;
   }
   if (colon != std::string_view::npos) {
-    const auto index = parse_u16(text.substr(colon + 1));
+    const auto index = parse_decimal_u16(text.substr(colon + 1));
     if (!index) return std::nullopt;
     address.index = *index;
   }

@@ -16,6 +16,9 @@ struct DeviceAddress {
   friend auto operator<=>(const DeviceAddress&, const DeviceAddress&) = default;
 };
 
+// A plain decimal number 0..65535 ("7", not "+7", "7x" or " 7"); nullopt otherwise.
+std::optional<std::uint16_t> parse_decimal_u16(std::string_view text);
+
 // "laser:0", "position" (index 0), "6:1" (numeric code). nullopt for unknown
 // interface names, bad or out-of-range indices.
 std::optional<DeviceAddress> parse_device_address(std::string_view text);

@@ -34,6 +34,7 @@ TEST(DeviceAddress, ParsesNamesIndicesAndCodes) {
   EXPECT_FALSE(parse_device_address("laser:"));
   EXPECT_FALSE(parse_device_address("laser:x"));
   EXPECT_FALSE(parse_device_address("laser:70000"));
+  EXPECT_FALSE(parse_device_address("laser:+1"));
   EXPECT_EQ(to_string(DeviceAddress{kLaserCode, 2}), "laser:2");
   EXPECT_EQ(to_string(DeviceAddress{99, 0}), "99:0");
 }
