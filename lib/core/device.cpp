@@ -1,0 +1,202 @@
+#include "core/device.hpp"
+
+#include <algorithm>
+#include <exception>
+#include <utility>
+
+#include "protocol/catalog.hpp"
+
+namespace playerkit::core {
+
+using protocol::Access;
+
+std::string to_string(const DeviceKey& key) {
+  return protocol::to_string(key.address) + "@" + std::to_string(key.port);
+}
+
+Device::Device(DeviceKey key, DeviceInfo info, std::unique_ptr<Driver> driver,
+               const Clock& clock, Logger& logger)
+    : key_(key),
+      info_(std::move(info)),
+      driver_(std::move(driver)),
+      clock_(clock),
+      logger_(logger),
+      data_(std::make_shared<const DataSample>()) {
+  driver_->device_ = this;
+  if (const auto* messages = protocol::find_messages(key_.address.interface);
+      messages != nullptr && messages->command != nullptr) {
+    command_min_size_ = messages->command->min_size;
+    command_max_size_ = messages->command->max_size;
+  }
+}
+
+Device::~Device() { force_shutdown(); }
+
+std::string Device::name() const { return to_string(key_) + " (" + info_.driver_name + ")"; }
+
+bool Device::readable() const { return info_.access == Access::kRead || info_.access == Access::kAll; }
+
+bool Device::writable() const { return info_.access == Access::kWrite || info_.access == Access::kAll; }
+
+bool Device::subscribe() {
+  std::lock_guard lock(subscription_mutex_);
+  if (subscriptions_ == 0) {
+    try {
+      driver_->setup();
+    } catch (const std::exception& e) {
+      logger_.error(name() + ": setup failed: " + e.what());
+      return false;
+    }
+    logger_.debug(name() + ": set up");
+  }
+  ++subscriptions_;
+  return true;
+}
+
+void Device::unsubscribe() {
+  std::lock_guard lock(subscription_mutex_);
+  if (subscriptions_ == 0) return;
+  if (subscriptions_ == 1) {
+    try {
+      driver_->shutdown();
+    } catch (const std::exception& e) {
+      // 1.5 kept the device subscribed when Shutdown failed; nobody is left to
+      // use it, so count it closed and say so.
+      logger_.error(name() + ": shutdown failed: " + e.what());
+    }
+    logger_.debug(name() + ": shut down");
+  }
+  --subscriptions_;
+}
+
+int Device::subscriptions() const {
+  std::lock_guard lock(subscription_mutex_);
+  return subscriptions_;
+}
+
+void Device::force_shutdown() {
+  std::lock_guard lock(subscription_mutex_);
+  if (subscriptions_ == 0) return;
+  subscriptions_ = 0;
+  try {
+    driver_->shutdown();
+  } catch (const std::exception& e) {
+    logger_.error(name() + ": shutdown failed: " + e.what());
+  }
+}
+
+void Device::prepare() { driver_->prepare(); }
+
+void Device::update() {
+  if (driver_->runs_own_thread()) return;
+  try {
+    driver_->update();
+  } catch (const std::exception& e) {
+    logger_.error(name() + ": update failed: " + e.what());
+  }
+  service_requests();
+}
+
+void Device::publish(std::vector<std::uint8_t> payload, Timestamp timestamp) {
+  {
+    std::lock_guard lock(mutex_);
+    auto sample = std::make_shared<DataSample>();
+    sample->payload = std::move(payload);
+    sample->timestamp = timestamp;
+    sample->sequence = data_->sequence + 1;
+    data_ = std::move(sample);
+  }
+  for (DeviceListener* listener : listeners_copy()) listener->data_published(*this);
+}
+
+std::shared_ptr<const DataSample> Device::latest_data() const {
+  std::lock_guard lock(mutex_);
+  return data_;
+}
+
+Device::CommandStatus Device::put_command(ClientId client, std::span<const std::uint8_t> payload) {
+  if (!writable() || command_max_size_ == 0) return CommandStatus::kReadOnly;
+  if (payload.size() < command_min_size_ || payload.size() > command_max_size_) {
+    return CommandStatus::kWrongSize;
+  }
+  std::lock_guard lock(mutex_);
+  command_ = Command{{payload.begin(), payload.end()}, clock_.now(), client};
+  command_taken_ = false;
+  return CommandStatus::kAccepted;
+}
+
+std::optional<Command> Device::take_command() {
+  std::lock_guard lock(mutex_);
+  if (command_taken_ || !command_) return std::nullopt;
+  command_taken_ = true;
+  return command_;
+}
+
+std::optional<Command> Device::latest_command() const {
+  std::lock_guard lock(mutex_);
+  return command_;
+}
+
+Device::RequestStatus Device::enqueue_request(Request request) {
+  std::lock_guard lock(mutex_);
+  if (requests_.size() >= info_.limits.request_queue) return RequestStatus::kQueueFull;
+  requests_.push_back(std::move(request));
+  return RequestStatus::kQueued;
+}
+
+std::size_t Device::pending_requests() const {
+  std::lock_guard lock(mutex_);
+  return requests_.size();
+}
+
+void Device::service_requests() {
+  for (;;) {
+    Request request;
+    {
+      std::lock_guard lock(mutex_);
+      if (requests_.empty()) return;
+      request = std::move(requests_.front());
+      requests_.pop_front();
+    }
+    RequestResult result;
+    try {
+      result = driver_->handle_request(request);
+    } catch (const std::exception& e) {
+      logger_.warning(name() + ": request " + std::to_string(request.subtype()) +
+                      " failed: " + e.what());
+      result = RequestResult::nack();
+    }
+    post_reply(Reply{request.client, request.device, result.type, std::move(result.payload),
+                     clock_.now()});
+  }
+}
+
+void Device::post_reply(Reply reply) {
+  {
+    std::lock_guard lock(mutex_);
+    replies_.push_back(std::move(reply));
+  }
+  for (DeviceListener* listener : listeners_copy()) listener->replies_ready(*this);
+}
+
+std::vector<Reply> Device::take_replies() {
+  std::lock_guard lock(mutex_);
+  return std::exchange(replies_, {});
+}
+
+void Device::add_listener(DeviceListener* listener) {
+  std::lock_guard lock(mutex_);
+  listeners_.push_back(listener);
+}
+
+void Device::remove_listener(DeviceListener* listener) {
+  std::lock_guard lock(mutex_);
+  std::erase(listeners_, listener);
+}
+
+std::vector<DeviceListener*> Device::listeners_copy() const {
+  std::lock_guard lock(mutex_);
+  return listeners_;
+}
+
+}  // namespace playerkit::core

@@ -1,0 +1,154 @@
+#pragma once
+// One served device: a driver plus the buffers between it and the clients.
+//
+//  * data: the latest sample the driver published (clients get the newest,
+//    never a backlog);
+//  * command: the latest command written by any client with write access
+//    (commands overwrite each other, by design: no locking between clients);
+//  * requests: a bounded FIFO; a full queue is refused (the server answers ERR);
+//  * replies: answers on their way back to the client that asked.
+//
+// Subscriptions are counted across all clients and drivers: the first runs the
+// driver's setup(), the last its shutdown(). A client with 'a' access holds two.
+// All members are thread-safe unless noted.
+
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/clock.hpp"
+#include "core/driver.hpp"
+#include "core/exchange.hpp"
+#include "core/logger.hpp"
+#include "protocol/constants.hpp"
+
+namespace playerkit::core {
+
+// A device is known by the port it is served on and its interface and index.
+struct DeviceKey {
+  std::uint16_t port = protocol::kDefaultPort;
+  DeviceAddress address;
+
+  friend auto operator<=>(const DeviceKey&, const DeviceKey&) = default;
+};
+
+// "laser:0@6665"
+std::string to_string(const DeviceKey& key);
+
+struct DeviceLimits {
+  // Requests waiting for the driver. 1.5 drivers mostly used 1; a few more lets
+  // several clients configure the same device without spurious ERRs.
+  std::size_t request_queue = 8;
+};
+
+struct DeviceInfo {
+  std::string driver_name;
+  std::string robot_name;  // from robot:<port>:<name>; what NAMESERVICE matches
+  protocol::Access access = protocol::Access::kAll;  // as the driver registered it
+  DeviceLimits limits;
+  bool alwayson = false;
+};
+
+// Told when a device has something for the server. Called from whichever
+// thread published, after the device's lock is released; keep it short (post
+// to an event loop).
+class DeviceListener {
+ public:
+  virtual ~DeviceListener() = default;
+  virtual void data_published(const Device& device) = 0;
+  virtual void replies_ready(const Device& device) = 0;
+};
+
+class Device {
+ public:
+  Device(DeviceKey key, DeviceInfo info, std::unique_ptr<Driver> driver, const Clock& clock,
+         Logger& logger);
+  ~Device();
+  Device(const Device&) = delete;
+  Device& operator=(const Device&) = delete;
+
+  [[nodiscard]] const DeviceKey& key() const { return key_; }
+  [[nodiscard]] DeviceAddress address() const { return key_.address; }
+  [[nodiscard]] const DeviceInfo& info() const { return info_; }
+  // "laser:0@6665 (sicklms200)" for log lines.
+  [[nodiscard]] std::string name() const;
+  [[nodiscard]] bool readable() const;  // registered access r or a
+  [[nodiscard]] bool writable() const;  // registered access w or a
+  [[nodiscard]] const Clock& clock() const { return clock_; }
+  [[nodiscard]] Logger& logger() const { return logger_; }
+  [[nodiscard]] Driver& driver() const { return *driver_; }
+
+  // --- subscriptions (from the server's thread or a driver's setup/shutdown)
+  // Runs setup() on the first subscription. False if setup refused (logged).
+  bool subscribe();
+  // Runs shutdown() when the last subscription goes. Extra calls are ignored.
+  void unsubscribe();
+  [[nodiscard]] int subscriptions() const;
+  // Shuts the driver down whatever the count (server exit).
+  void force_shutdown();
+  // Once before serving.
+  void prepare();
+  // One event-loop step for subscribed drivers without a thread of their own:
+  // update(), then answer queued requests.
+  void update();
+
+  // --- data (driver side publishes, server side reads)
+  void publish(std::vector<std::uint8_t> payload, Timestamp timestamp);
+  void publish(std::vector<std::uint8_t> payload) { publish(std::move(payload), clock_.now()); }
+  // Never null; sequence 0 until the first publish.
+  [[nodiscard]] std::shared_ptr<const DataSample> latest_data() const;
+
+  // --- commands (server side writes, driver side takes)
+  enum class CommandStatus { kAccepted, kReadOnly, kWrongSize };
+  // Checks the size against the interface's command struct (wire-format.md §6).
+  CommandStatus put_command(ClientId client, std::span<const std::uint8_t> payload);
+  // The newest command not taken yet.
+  std::optional<Command> take_command();
+  // The newest command, taken or not.
+  [[nodiscard]] std::optional<Command> latest_command() const;
+
+  // --- requests and replies
+  enum class RequestStatus { kQueued, kQueueFull };
+  RequestStatus enqueue_request(Request request);
+  [[nodiscard]] std::size_t pending_requests() const;
+  // Answers every queued request through the driver's handle_request(). A
+  // driver that throws answers NACK. Call from the thread that owns the driver.
+  void service_requests();
+  // For drivers that answer later than handle_request() returns.
+  void post_reply(Reply reply);
+  std::vector<Reply> take_replies();
+
+  // --- listeners (the server; drivers reading other devices)
+  void add_listener(DeviceListener* listener);
+  void remove_listener(DeviceListener* listener);
+
+ private:
+  std::vector<DeviceListener*> listeners_copy() const;
+
+  const DeviceKey key_;
+  const DeviceInfo info_;
+  std::unique_ptr<Driver> driver_;
+  const Clock& clock_;
+  Logger& logger_;
+  std::size_t command_min_size_ = 0;
+  std::size_t command_max_size_ = 0;  // 0: the interface has no command
+
+  mutable std::mutex subscription_mutex_;
+  int subscriptions_ = 0;
+
+  mutable std::mutex mutex_;  // everything below
+  std::shared_ptr<const DataSample> data_;
+  std::optional<Command> command_;
+  bool command_taken_ = true;
+  std::deque<Request> requests_;
+  std::vector<Reply> replies_;
+  std::vector<DeviceListener*> listeners_;
+};
+
+}  // namespace playerkit::core

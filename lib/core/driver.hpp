@@ -1,0 +1,93 @@
+#pragma once
+// What a driver author writes (manual chapter 8, in modern C++).
+//
+// A driver serves one device. The framework calls setup() when the first
+// client subscribes and shutdown() when the last one leaves; in between the
+// driver publishes data, reads the latest command and answers requests through
+// device(). Two ways to run:
+//
+//  * Driver: the server calls update() from its event loop about every 10 ms
+//    while the device is subscribed, then answers queued requests through
+//    handle_request(). Keep update() short; it shares the loop with all clients.
+//  * ThreadedDriver: run() goes in a thread of its own from setup() to
+//    shutdown(), for blocking I/O (serial ports, sockets). It calls
+//    device().service_requests() when it is ready to answer requests.
+//
+// Everything on device() is thread-safe. A request the driver does not know
+// must still be answered: the default handle_request() says NACK.
+
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <stdexcept>
+#include <stop_token>
+#include <thread>
+
+#include "core/exchange.hpp"
+
+namespace playerkit::core {
+
+class Device;
+
+// Throw from setup() to refuse a subscription; the client is granted 'e' and
+// the message is logged.
+class DriverError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class Driver {
+ public:
+  Driver() = default;
+  Driver(const Driver&) = delete;
+  Driver& operator=(const Driver&) = delete;
+  virtual ~Driver() = default;
+
+  // Once, after every device is created and before the server accepts clients.
+  virtual void prepare() {}
+  virtual void setup() {}
+  virtual void shutdown() {}
+  // Event-loop drivers: one step of work, from the server's thread.
+  virtual void update() {}
+  // One configuration request; the reply goes back to whoever asked.
+  virtual RequestResult handle_request(const Request& request);
+  // True for drivers that answer requests from their own thread.
+  [[nodiscard]] virtual bool runs_own_thread() const { return false; }
+
+ protected:
+  // The device this driver serves; valid from construction of the Device on.
+  [[nodiscard]] Device& device() const;
+
+ private:
+  friend class Device;
+  Device* device_ = nullptr;
+};
+
+class ThreadedDriver : public Driver {
+ public:
+  ~ThreadedDriver() override;
+
+  void setup() final;
+  void shutdown() final;
+  [[nodiscard]] bool runs_own_thread() const final { return true; }
+
+ protected:
+  // Before the thread starts (open the port here; throw DriverError to refuse).
+  virtual void open() {}
+  // After the thread has stopped.
+  virtual void close() {}
+  // The thread body: loop until stop is requested.
+  virtual void run(std::stop_token stop) = 0;
+
+  // Waits up to `duration`, returning early (false) when stop is requested.
+  bool sleep_for(const std::stop_token& stop, std::chrono::nanoseconds duration);
+
+ private:
+  void stop_thread();
+
+  std::jthread thread_;
+  std::mutex sleep_mutex_;
+  std::condition_variable_any sleep_wakeup_;
+};
+
+}  // namespace playerkit::core

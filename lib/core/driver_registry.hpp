@@ -1,0 +1,60 @@
+#pragma once
+// Driver name -> what it serves and how to make one. The server fills a
+// registry with the built-in drivers (lib/drivers) and any plugins (-d), then
+// creates one driver per device section of the config file.
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "config/config_file.hpp"
+#include "core/clock.hpp"
+#include "core/device.hpp"
+#include "core/driver.hpp"
+#include "core/logger.hpp"
+
+namespace playerkit::core {
+
+class DeviceTable;
+
+// What a driver factory gets: its config section and the world around it.
+struct DriverContext {
+  const config::ConfigFile& config;
+  const config::Section& section;  // read options with section.read_*()
+  DeviceKey key;                   // the device being created
+  std::string robot_name;
+  DeviceTable& devices;  // other devices, for drivers built on them (amcl, writelog)
+  const Clock& clock;
+  Logger& logger;
+};
+
+using DriverFactory = std::function<std::unique_ptr<Driver>(const DriverContext&)>;
+
+struct DriverSpec {
+  std::string name;                     // as written after `driver` in a config file
+  std::vector<std::uint16_t> interfaces;  // interface codes it can serve
+  protocol::Access access = protocol::Access::kAll;  // r, w or a: what clients may do
+  DriverFactory factory;
+  DeviceLimits limits;
+  std::string summary;  // one line for `drivers list`
+};
+
+class DriverRegistry {
+ public:
+  // A later spec of the same name replaces the earlier one (as in 1.5, so a
+  // plugin may override a built-in driver).
+  void add(DriverSpec spec);
+  [[nodiscard]] const DriverSpec* find(std::string_view name) const;
+  [[nodiscard]] bool contains(std::string_view name) const { return find(name) != nullptr; }
+  // Sorted by name.
+  [[nodiscard]] std::vector<const DriverSpec*> all() const;
+
+ private:
+  std::map<std::string, DriverSpec, std::less<>> drivers_;
+};
+
+}  // namespace playerkit::core

@@ -1,0 +1,23 @@
+#pragma once
+// Turns a loaded config file into devices: one driver per device declaration,
+// created through the registry, in file order.
+
+#include "config/config_file.hpp"
+#include "core/clock.hpp"
+#include "core/device_table.hpp"
+#include "core/driver_registry.hpp"
+#include "core/logger.hpp"
+
+namespace playerkit::core {
+
+// Load options whose driver check asks this registry, so that an unknown driver
+// is reported at its file:line:col while the file is read.
+config::LoadOptions load_options_for(const DriverRegistry& registry, std::uint16_t default_port);
+
+// Adds a device per declaration of `config` to `devices`. Throws
+// config::ConfigError (file:line:col) for a driver that is not registered,
+// does not serve the declared interface, or fails while reading its options.
+void instantiate_devices(const config::ConfigFile& config, const DriverRegistry& registry,
+                         DeviceTable& devices, const Clock& clock, Logger& logger);
+
+}  // namespace playerkit::core

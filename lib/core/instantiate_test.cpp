@@ -1,0 +1,115 @@
+#include "core/instantiate.hpp"
+
+#include <gtest/gtest.h>
+
+#include "config/errors.hpp"
+#include "core/test_drivers.hpp"
+#include "protocol/interfaces.hpp"
+
+namespace playerkit::core {
+namespace {
+
+using protocol::Access;
+
+struct InstantiateFixture : ::testing::Test {
+  void SetUp() override {
+    logger.set_sink([](LogLevel, std::string_view) {});
+    registry.add(DriverSpec{
+        "counting",
+        {protocol::kLaserCode, protocol::kSonarCode},
+        Access::kRead,
+        [this](const DriverContext& context) -> std::unique_ptr<Driver> {
+          seen_rate = context.section.read_int("rate", -1);
+          seen_robot = context.robot_name;
+          return std::make_unique<testing::CountingDriver>(counts);
+        },
+        DeviceLimits{3},
+        "counts calls"});
+  }
+  config::ConfigFile load(std::string_view text) {
+    return config::ConfigFile::parse(text, "test.cfg", load_options_for(registry, 7000));
+  }
+  testing::CallCounts counts;
+  ManualClock clock;
+  Logger logger;
+  DriverRegistry registry;
+  DeviceTable table;
+  int seen_rate = 0;
+  std::string seen_robot;
+};
+
+TEST_F(InstantiateFixture, CreatesOneDevicePerDeclarationWithItsOptions) {
+  const auto config = load(
+      "laser:1 ( driver \"counting\" rate 20 )\n"
+      "robot:7001:bob ( )\n"
+      "sonar ( driver \"counting\" alwayson 1 )\n");
+  instantiate_devices(config, registry, table, clock, logger);
+  ASSERT_EQ(table.size(), 2u);
+  const Device* laser = table.find(7000, {protocol::kLaserCode, 1});
+  ASSERT_NE(laser, nullptr);
+  EXPECT_EQ(laser->info().driver_name, "counting");
+  EXPECT_EQ(laser->info().access, Access::kRead);
+  EXPECT_EQ(laser->info().limits.request_queue, 3u);
+  EXPECT_FALSE(laser->info().alwayson);
+  const Device* sonar = table.find(7001, {protocol::kSonarCode, 0});
+  ASSERT_NE(sonar, nullptr);
+  EXPECT_TRUE(sonar->info().alwayson);
+  EXPECT_EQ(sonar->info().robot_name, "bob");
+  EXPECT_EQ(seen_robot, "bob");
+  EXPECT_EQ(seen_rate, -1);
+  EXPECT_TRUE(config.unused_properties().empty());
+}
+
+TEST_F(InstantiateFixture, UnknownDriverIsReportedWhereItIsWritten) {
+  try {
+    load("\nlaser ( driver \"sicklms200\" )\n");
+    FAIL() << "expected a ConfigError";
+  } catch (const config::ConfigError& e) {
+    EXPECT_EQ(e.where().line, 2);
+    EXPECT_NE(std::string(e.what()).find("sicklms200"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(InstantiateFixture, DriverThatDoesNotServeTheInterfaceIsAConfigError) {
+  const auto config = load("position ( driver \"counting\" )\n");
+  try {
+    instantiate_devices(config, registry, table, clock, logger);
+    FAIL() << "expected a ConfigError";
+  } catch (const config::ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "test.cfg:1:1: driver 'counting' does not serve interface 'position' "
+              "(it serves laser, sonar)");
+  }
+}
+
+TEST_F(InstantiateFixture, FactoryFailureBecomesAConfigErrorAtTheSection) {
+  registry.add(DriverSpec{"broken", {protocol::kLaserCode}, Access::kRead,
+                          [](const DriverContext&) -> std::unique_ptr<Driver> {
+                            throw std::runtime_error("no such port /dev/ttyS9");
+                          },
+                          {}, ""});
+  const auto config = load("\n  laser ( driver \"broken\" )\n");
+  try {
+    instantiate_devices(config, registry, table, clock, logger);
+    FAIL() << "expected a ConfigError";
+  } catch (const config::ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "test.cfg:2:3: driver 'broken' could not be created: no such port /dev/ttyS9");
+  }
+}
+
+TEST(DriverRegistryTest, LaterRegistrationReplacesAndListingIsSorted) {
+  DriverRegistry registry;
+  registry.add({"zeta", {}, Access::kRead, nullptr, {}, "first"});
+  registry.add({"alpha", {}, Access::kRead, nullptr, {}, ""});
+  registry.add({"zeta", {}, Access::kWrite, nullptr, {}, "second"});
+  const auto all = registry.all();
+  ASSERT_EQ(all.size(), 2u);
+  EXPECT_EQ(all[0]->name, "alpha");
+  EXPECT_EQ(all[1]->name, "zeta");
+  EXPECT_EQ(registry.find("zeta")->summary, "second");
+  EXPECT_EQ(registry.find("nope"), nullptr);
+}
+
+}  // namespace
+}  // namespace playerkit::core
