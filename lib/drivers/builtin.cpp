@@ -1,0 +1,15 @@
+#include "drivers/builtin.hpp"
+
+#include "drivers/comms/udpbroadcast_driver.hpp"
+#include "drivers/mcom/lifomcom_driver.hpp"
+#include "drivers/null/null_driver.hpp"
+
+namespace playerkit::drivers {
+
+void register_builtin_drivers(core::DriverRegistry& registry) {
+  registry.add(null_driver_spec());
+  registry.add(lifomcom_driver_spec());
+  registry.add(udpbroadcast_driver_spec());
+}
+
+}  // namespace playerkit::drivers

@@ -1,0 +1,115 @@
+#include "drivers/comms/udpbroadcast_driver.hpp"
+
+#include <chrono>
+#include <exception>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+#include "core/device.hpp"
+#include "protocol/constants.hpp"
+#include "protocol/interfaces.hpp"
+
+namespace playerkit::drivers {
+
+namespace {
+
+// How long the thread waits for a datagram before looking at commands,
+// requests and the stop flag again: one server round (10 ms), so neither a
+// command nor shutdown waits noticeably longer than elsewhere.
+constexpr std::chrono::milliseconds kPollInterval{10};
+
+// A flood of datagrams must not starve commands and requests.
+constexpr int kMaxDatagramsPerRound = 64;
+
+}  // namespace
+
+Ipv4Endpoint read_broadcast_destination(std::string_view address, int port) {
+  if (port < 1 || port > 65535) {
+    throw std::runtime_error("udpbroadcast: port " + std::to_string(port) +
+                             " is not a UDP port (1-65535)");
+  }
+  auto destination = Ipv4Endpoint::parse(address, static_cast<std::uint16_t>(port));
+  if (!destination) {
+    throw std::runtime_error("udpbroadcast: addr \"" + std::string(address) +
+                             "\" is not an IPv4 address in dotted form");
+  }
+  return *destination;
+}
+
+UdpBroadcastDriver::UdpBroadcastDriver(Ipv4Endpoint destination)
+    // One byte more than a payload may hold, so that an oversized datagram shows.
+    : destination_(destination), receive_buffer_(protocol::kMaxPayloadSize + 1) {}
+
+void UdpBroadcastDriver::open() {
+  try {
+    socket_ = BroadcastSocket::bind_shared(destination_.port);
+  } catch (const std::system_error& e) {
+    throw core::DriverError("udpbroadcast: cannot listen on UDP port " +
+                            std::to_string(destination_.port) + ": " + e.what());
+  }
+  // A command written before the subscription would otherwise go out now.
+  (void)device().take_command();
+}
+
+void UdpBroadcastDriver::close() { socket_.reset(); }
+
+void UdpBroadcastDriver::run(std::stop_token stop) {
+  while (!stop.stop_requested()) {
+    device().service_requests();
+    send_newest_command();
+    if (socket_->wait_readable(kPollInterval)) publish_waiting_datagrams();
+  }
+}
+
+void UdpBroadcastDriver::send_newest_command() {
+  const auto command = device().take_command();
+  if (!command) return;
+  try {
+    socket_->send_to(destination_, command->payload);
+  } catch (const std::system_error& e) {
+    // Delivery is best effort (manual §7.43); keep serving.
+    device().logger().warning(device().name() + ": message not sent: " + e.what());
+  }
+}
+
+void UdpBroadcastDriver::publish_waiting_datagrams() {
+  for (int received = 0; received < kMaxDatagramsPerRound; ++received) {
+    std::optional<std::size_t> length;
+    try {
+      length = socket_->receive(receive_buffer_);
+    } catch (const std::system_error& e) {
+      device().logger().warning(device().name() + ": receive failed: " + e.what());
+      return;
+    }
+    if (!length) return;
+    if (*length == 0) continue;  // player_comms_data_t needs at least one byte
+    if (*length > protocol::kMaxPayloadSize) {
+      device().logger().warning(device().name() + ": dropped a datagram of " +
+                                std::to_string(*length) + " bytes (at most " +
+                                std::to_string(protocol::kMaxPayloadSize) + " fit a message)");
+      continue;
+    }
+    const auto begin = receive_buffer_.begin();
+    device().publish({begin, begin + static_cast<std::ptrdiff_t>(*length)});
+  }
+}
+
+core::DriverSpec udpbroadcast_driver_spec() {
+  core::DriverSpec spec;
+  spec.name = "udpbroadcast";
+  spec.interfaces = {protocol::kCommsCode};
+  spec.access = protocol::Access::kAll;
+  spec.factory = [](const core::DriverContext& context) {
+    const auto destination = read_broadcast_destination(
+        context.section.read_string("addr", kDefaultBroadcastAddress),
+        context.section.read_int("port", kDefaultBroadcastPort));
+    return std::make_unique<UdpBroadcastDriver>(destination);
+  };
+  spec.limits = core::DeviceLimits{};
+  spec.summary = "sends comms commands as UDP broadcasts and publishes every datagram heard";
+  return spec;
+}
+
+}  // namespace playerkit::drivers

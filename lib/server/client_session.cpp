@@ -1,0 +1,357 @@
+#include "server/client_session.hpp"
+
+#include <algorithm>
+
+#include <boost/asio/buffer.hpp>
+#include <boost/asio/post.hpp>
+
+#include "protocol/banner.hpp"
+#include "protocol/binary_codec.hpp"
+#include "protocol/interfaces.hpp"
+#include "protocol/message.hpp"
+#include "protocol/messages/player.hpp"
+#include "protocol/messages/position.hpp"
+#include "server/data_round.hpp"
+#include "server/player_requests.hpp"
+
+namespace playerkit::server {
+
+namespace asio = boost::asio;
+using protocol::MessageType;
+
+namespace {
+
+// 1.5 compared at most 31 characters of key.
+std::string truncated_key(const std::string& key) { return key.substr(0, protocol::kKeyLength - 1); }
+
+// The key of an AUTH payload: bytes 2.., NUL-terminated within 32 bytes.
+std::string key_of(std::span<const std::uint8_t> payload) {
+  std::array<char, protocol::kKeyLength> key{};
+  const std::size_t n = std::min(payload.size() - 2, key.size() - 1);
+  std::copy_n(payload.begin() + 2, n, key.begin());
+  return std::string(key.data());
+}
+
+}  // namespace
+
+ClientSession::ClientSession(Socket socket, core::ClientId id, std::uint16_t port,
+                             SessionContext context)
+    : socket_(std::move(socket)), context_(std::move(context)), push_timer_(socket_.get_executor()) {
+  state_.id = id;
+  state_.port = port;
+  state_.auth_pending = context_.options.auth_key.has_value();
+  boost::system::error_code ec;
+  const auto endpoint = socket_.remote_endpoint(ec);
+  peer_ = ec ? "unknown peer" : endpoint.address().to_string() + ":" + std::to_string(endpoint.port());
+  socket_.set_option(asio::ip::tcp::no_delay(true), ec);
+}
+
+std::string ClientSession::label() const { return "client " + std::to_string(state_.id) + " (" + peer_ + ")"; }
+
+void ClientSession::start() {
+  context_.logger.info(label() + " connected on port " + std::to_string(state_.port));
+  // Clients read the banner with a single recv(): it goes first, in one write.
+  const auto banner = protocol::make_banner();
+  enqueue({banner.begin(), banner.end()});
+  rearm_push_timer();
+  read_more();
+}
+
+// ---------------------------------------------------------------- reading
+
+void ClientSession::read_more() {
+  if (closed_) return;
+  socket_.async_read_some(asio::buffer(read_buffer_),
+                          [self = shared_from_this()](const boost::system::error_code& ec,
+                                                      std::size_t n) {
+                            if (self->closed_) return;
+                            if (ec) {
+                              self->close(ec == asio::error::eof ? "disconnected"
+                                                                 : "connection lost: " + ec.message());
+                              return;
+                            }
+                            for (const FrameEvent& event : self->reader_.feed(
+                                     std::span<const std::uint8_t>(self->read_buffer_.data(), n))) {
+                              if (self->closed_) return;
+                              if (const auto* message = std::get_if<protocol::Message>(&event)) {
+                                self->handle_message(*message);
+                              } else if (const auto* skipped = std::get_if<SkippedBytes>(&event)) {
+                                self->warn_once("garbage", self->label() + ": skipped " +
+                                                               std::to_string(skipped->count) +
+                                                               " bytes that were not a message");
+                              } else {
+                                self->handle_oversize(std::get<OversizeMessage>(event).header);
+                              }
+                            }
+                            self->read_more();
+                          });
+}
+
+void ClientSession::handle_message(const protocol::Message& message) {
+  if (state_.auth_pending) {
+    handle_authentication(message);
+    return;
+  }
+  switch (message.type()) {
+    case MessageType::kRequest: handle_request(message); break;
+    case MessageType::kCommand: handle_command(message); break;
+    default:
+      warn_once("type" + std::to_string(message.header.type),
+                label() + ": ignored a message of type " + std::to_string(message.header.type) +
+                    " (clients send only commands and requests)");
+  }
+}
+
+void ClientSession::handle_authentication(const protocol::Message& message) {
+  const auto& payload = message.payload;
+  const bool accepted = message.header.device == protocol::kPlayerCode && payload.size() >= 2 &&
+                        payload.size() <= protocol::AuthRequest::kWireSize &&
+                        ((payload[0] << 8) | payload[1]) == protocol::kPlayerAuthReq &&
+                        key_of(payload) == truncated_key(*context_.options.auth_key);
+  if (!accepted) {
+    close("authentication failed");
+    return;
+  }
+  state_.auth_pending = false;
+  send_reply(MessageType::kAck, message.device(), {}, context_.clock.now());
+  rearm_push_timer();
+}
+
+void ClientSession::handle_request(const protocol::Message& message) {
+  if (message.header.device != protocol::kPlayerCode) {
+    handle_device_request(message);
+    return;
+  }
+  PlayerReply reply = answer_player_request(state_, message.payload, context_.devices);
+  send_reply(reply.type, message.device(), reply.payload, context_.clock.now());
+  if (reply.schedule_changed) rearm_push_timer();
+  if (reply.round_requested) request_round();
+}
+
+void ClientSession::handle_device_request(const protocol::Message& message) {
+  const protocol::DeviceAddress address = message.device();
+  const auto now = context_.clock.now();
+  const Access access = state_.subscriptions.access(address);
+  core::Device* device = context_.devices.find(state_.port, address);
+  if (device == nullptr || !(SubscriptionTable::can_read(access) || SubscriptionTable::can_write(access))) {
+    send_reply(MessageType::kError, address, {}, now);
+    return;
+  }
+  // 1.5 silently dropped empty requests and cut long ones to 4096 bytes; an
+  // answer is better than a client waiting for one.
+  if (message.payload.empty() || message.payload.size() > protocol::kMaxRequestReplySize) {
+    warn_once("request-size", label() + ": request of " + std::to_string(message.payload.size()) +
+                                  " bytes to " + device->name() + " refused");
+    send_reply(MessageType::kNack, address, {}, now);
+    return;
+  }
+  if (device->enqueue_request({state_.id, address, message.payload, now}) ==
+      core::Device::RequestStatus::kQueueFull) {
+    send_reply(MessageType::kError, address, {}, now);
+    return;
+  }
+  // Event-loop drivers answer right away, from this thread; threaded drivers
+  // answer from theirs. Either way the reply comes back through the server.
+  if (!device->driver().runs_own_thread()) device->service_requests();
+}
+
+void ClientSession::handle_command(const protocol::Message& message) {
+  const protocol::DeviceAddress address = message.device();
+  const std::string target = protocol::to_string(address);
+  core::Device* device = context_.devices.find(state_.port, address);
+  if (device == nullptr) {
+    warn_once("cmd-nodev" + target, label() + ": command to " + target + ", which is not served here");
+    return;
+  }
+  if (!SubscriptionTable::can_write(state_.subscriptions.access(address))) {
+    warn_once("cmd-access" + target,
+              label() + ": command to " + target + " ignored: the client has no write access");
+    return;
+  }
+  switch (device->put_command(state_.id, message.payload)) {
+    case core::Device::CommandStatus::kAccepted: break;
+    case core::Device::CommandStatus::kReadOnly:
+      warn_once("cmd-readonly" + target,
+                label() + ": command to " + device->name() + " ignored: it takes no commands");
+      break;
+    case core::Device::CommandStatus::kWrongSize:
+      warn_once("cmd-size" + target, label() + ": command of " +
+                                         std::to_string(message.payload.size()) + " bytes to " +
+                                         device->name() + " ignored: wrong size for its interface");
+      break;
+  }
+}
+
+void ClientSession::handle_oversize(const protocol::MessageHeader& header) {
+  warn_once("oversize", label() + ": dropped a message of " + std::to_string(header.size) +
+                            " bytes (the limit is " + std::to_string(protocol::kMaxPayloadSize) + ")");
+  if (!state_.auth_pending && header.type == static_cast<std::uint16_t>(MessageType::kRequest)) {
+    send_reply(MessageType::kNack, {header.device, header.device_index}, {}, context_.clock.now());
+  }
+}
+
+// ---------------------------------------------------------------- writing
+
+void ClientSession::deliver_reply(const core::Reply& reply) {
+  if (closed_) return;
+  if (reply.payload.size() > protocol::kMaxRequestReplySize) {
+    context_.logger.error(label() + ": a driver's reply of " + std::to_string(reply.payload.size()) +
+                          " bytes is too long for clients; sending NACK instead");
+    send_reply(MessageType::kNack, reply.device, {}, reply.timestamp);
+    return;
+  }
+  send_reply(reply.type, reply.device, reply.payload, reply.timestamp);
+}
+
+void ClientSession::send_reply(MessageType type, protocol::DeviceAddress device,
+                               std::span<const std::uint8_t> payload, protocol::Timestamp timestamp) {
+  auto header = protocol::make_header(type, device, context_.clock.now(), timestamp);
+  enqueue(protocol::encode_message(header, payload));
+  if (output_bytes_ > context_.options.max_pending_reply_bytes) {
+    close("does not read its replies (" + std::to_string(output_bytes_) + " bytes waiting)");
+  }
+}
+
+void ClientSession::enqueue(std::vector<std::uint8_t> bytes) {
+  if (closed_) return;
+  output_bytes_ += bytes.size();
+  output_.push_back(std::move(bytes));
+  write_more();
+}
+
+void ClientSession::request_round() {
+  if (closed_ || state_.auth_pending) return;
+  if (round_pending_) ++stats_.rounds_dropped;
+  round_pending_ = true;
+  write_more();
+}
+
+void ClientSession::write_more() {
+  if (closed_ || writing_) return;
+  if (output_.empty() && round_pending_) {
+    round_pending_ = false;
+    if (state_.push_mode() || std::exchange(state_.data_requested, false)) {
+      DataRound round = build_data_round(state_, context_.devices, context_.clock.now());
+      ++stats_.rounds_sent;
+      output_bytes_ += round.bytes.size();
+      output_.push_back(std::move(round.bytes));
+    }
+  }
+  if (output_.empty()) return;
+
+  std::vector<asio::const_buffer> buffers;
+  buffers.reserve(std::min<std::size_t>(output_.size(), 64));
+  for (const auto& bytes : output_) {
+    if (buffers.size() == 64) break;
+    const std::size_t skip = buffers.empty() ? front_offset_ : 0;
+    buffers.emplace_back(bytes.data() + skip, bytes.size() - skip);
+  }
+  writing_ = true;
+  last_write_progress_ = Clock::now();
+  socket_.async_write_some(buffers, [self = shared_from_this()](const boost::system::error_code& ec,
+                                                                std::size_t written) {
+    self->writing_ = false;
+    if (self->closed_) return;
+    if (ec) {
+      self->close("connection lost: " + ec.message());
+      return;
+    }
+    self->last_write_progress_ = Clock::now();
+    self->output_bytes_ -= written;
+    while (written > 0) {
+      const std::size_t left_in_front = self->output_.front().size() - self->front_offset_;
+      if (written < left_in_front) {
+        self->front_offset_ += written;
+        break;
+      }
+      written -= left_in_front;
+      self->output_.pop_front();
+      self->front_offset_ = 0;
+    }
+    self->write_more();
+  });
+}
+
+void ClientSession::check_stalled(std::chrono::steady_clock::time_point now) {
+  if (closed_ || !writing_) return;
+  if (now - last_write_progress_ > context_.options.stall_timeout) {
+    const auto seconds = std::chrono::duration<double>(now - last_write_progress_).count();
+    context_.logger.warning(label() + ": has not read anything for " + std::to_string(seconds).substr(0, 4) +
+                            " s; disconnecting it (" + std::to_string(stats_.rounds_dropped) +
+                            " data rounds dropped)");
+    close("stalled");
+  }
+}
+
+// ---------------------------------------------------------------- schedule
+
+void ClientSession::rearm_push_timer() {
+  ++push_generation_;
+  push_timer_.cancel();
+  if (closed_ || state_.auth_pending || !state_.push_mode() || state_.frequency == 0) return;
+  const unsigned hz = std::min<unsigned>(state_.frequency, context_.options.max_push_frequency);
+  const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / hz));
+  // As in 1.5, a round is due once a period has passed since the last one; a
+  // new client has had none, so its first round goes out at once.
+  next_push_ = last_push_ == Clock::time_point{} ? Clock::now() : last_push_ + period;
+  wait_for_push(push_generation_);
+}
+
+void ClientSession::wait_for_push(std::uint64_t generation) {
+  push_timer_.expires_at(next_push_);
+  push_timer_.async_wait([self = shared_from_this(), generation](const boost::system::error_code& ec) {
+    if (ec || self->closed_ || generation != self->push_generation_) return;
+    const auto now = Clock::now();
+    self->last_push_ = now;
+    self->request_round();
+    const unsigned hz = std::min<unsigned>(self->state_.frequency, self->context_.options.max_push_frequency);
+    const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / hz));
+    // Keep the cadence steady; after a hiccup longer than a period, restart it.
+    self->next_push_ += period;
+    if (self->next_push_ <= now) self->next_push_ = now + period;
+    self->wait_for_push(generation);
+  });
+}
+
+// ---------------------------------------------------------------- ending
+
+void ClientSession::release_devices() {
+  for (const SubscriptionTable::Entry& entry : state_.subscriptions.entries()) {
+    core::Device* device = context_.devices.find(state_.port, entry.device);
+    const int held = SubscriptionTable::held_subscriptions(entry.access);
+    if (device == nullptr || held == 0) continue;
+    // A robot whose last client vanished must not drive on with the last
+    // command: stop it, as 1.5 did (1.5 stopped position:0 whichever position
+    // device it was, and left the state/type bytes uninitialised).
+    if (entry.device.interface == protocol::kPositionCode && device->subscriptions() == held) {
+      const auto stop = protocol::encode(protocol::PositionCommand{});
+      device->put_command(state_.id, stop);
+    }
+    for (int i = 0; i < held; ++i) device->unsubscribe();
+  }
+  state_.subscriptions.entries().clear();
+}
+
+void ClientSession::close(const std::string& reason) {
+  if (closed_) return;
+  closed_ = true;
+  ++push_generation_;
+  push_timer_.cancel();
+  boost::system::error_code ignored;
+  socket_.shutdown(Socket::shutdown_both, ignored);
+  socket_.close(ignored);
+  release_devices();
+  output_.clear();
+  context_.logger.info(label() + " " + reason);
+  if (context_.closed) context_.closed(state_.id);
+}
+
+void ClientSession::warn_once(const std::string& kind, const std::string& message) {
+  if (warned_.insert(kind).second) {
+    context_.logger.warning(message);
+  } else {
+    context_.logger.debug(message);
+  }
+}
+
+}  // namespace playerkit::server

@@ -1,0 +1,115 @@
+#pragma once
+// One client connection: reads messages and answers them, sends data rounds
+// on the client's schedule, and never lets a slow reader hold anyone else up.
+//
+// Output is a queue of replies plus at most one data round waiting: when a
+// round falls due while the socket is still busy, it is only marked pending
+// and built (with the freshest data) once the socket has room. Rounds that
+// fall due meanwhile are dropped, so a slow client sees lower-rate but current
+// data, and its output never grows without bound. Replies are never dropped.
+//
+// Everything here runs on the server's event-loop thread.
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/steady_timer.hpp>
+
+#include "core/clock.hpp"
+#include "core/device_table.hpp"
+#include "core/logger.hpp"
+#include "server/client_state.hpp"
+#include "server/frame_reader.hpp"
+#include "server/server_options.hpp"
+
+namespace playerkit::server {
+
+// What a session needs from the server that owns it.
+struct SessionContext {
+  core::DeviceTable& devices;
+  const core::Clock& clock;
+  core::Logger& logger;
+  const ServerOptions& options;
+  std::function<void(core::ClientId)> closed;  // called once, when the session ends
+};
+
+struct SessionStats {
+  std::uint64_t rounds_sent = 0;
+  std::uint64_t rounds_dropped = 0;  // fell due while the client was still busy
+};
+
+class ClientSession : public std::enable_shared_from_this<ClientSession> {
+ public:
+  using Socket = boost::asio::ip::tcp::socket;
+
+  ClientSession(Socket socket, core::ClientId id, std::uint16_t port, SessionContext context);
+
+  void start();
+  void deliver_reply(const core::Reply& reply);
+  // Ends the session: releases its devices and closes the socket.
+  void close(const std::string& reason);
+  // Closes the session if its socket has taken nothing for the stall timeout.
+  void check_stalled(std::chrono::steady_clock::time_point now);
+
+  [[nodiscard]] core::ClientId id() const { return state_.id; }
+  [[nodiscard]] const SessionStats& stats() const { return stats_; }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+
+  void read_more();
+  void handle_message(const protocol::Message& message);
+  void handle_authentication(const protocol::Message& message);
+  void handle_request(const protocol::Message& message);
+  void handle_device_request(const protocol::Message& message);
+  void handle_command(const protocol::Message& message);
+  void handle_oversize(const protocol::MessageHeader& header);
+
+  void send_reply(protocol::MessageType type, protocol::DeviceAddress device,
+                  std::span<const std::uint8_t> payload, protocol::Timestamp timestamp);
+  void enqueue(std::vector<std::uint8_t> bytes);
+  void request_round();
+  void write_more();
+
+  void rearm_push_timer();
+  void wait_for_push(std::uint64_t generation);
+  void release_devices();
+  // Logs a problem once per kind per connection, then only at debug level,
+  // so that a misbehaving client cannot flood the log.
+  void warn_once(const std::string& kind, const std::string& message);
+  [[nodiscard]] std::string label() const;
+
+  Socket socket_;
+  SessionContext context_;
+  ClientState state_;
+  std::string peer_;
+  bool closed_ = false;
+
+  FrameReader reader_;
+  std::array<std::uint8_t, 16384> read_buffer_{};
+
+  std::deque<std::vector<std::uint8_t>> output_;
+  std::size_t output_bytes_ = 0;
+  std::size_t front_offset_ = 0;  // bytes of output_.front() already written
+  bool writing_ = false;
+  bool round_pending_ = false;
+  Clock::time_point last_write_progress_;
+
+  boost::asio::steady_timer push_timer_;
+  std::uint64_t push_generation_ = 0;
+  Clock::time_point last_push_{};
+  Clock::time_point next_push_{};
+
+  std::set<std::string> warned_;
+  SessionStats stats_;
+};
+
+}  // namespace playerkit::server

@@ -1,0 +1,109 @@
+#include "server/data_round.hpp"
+
+#include <gtest/gtest.h>
+
+#include "core/test_drivers.hpp"
+#include "protocol/interfaces.hpp"
+
+namespace playerkit::server {
+namespace {
+
+using protocol::MessageType;
+using Bytes = std::vector<std::uint8_t>;
+
+std::vector<protocol::Message> split(const Bytes& bytes) {
+  std::vector<protocol::Message> messages;
+  std::size_t offset = 0;
+  while (offset < bytes.size()) {
+    auto parsed = protocol::parse_message(std::span(bytes).subspan(offset));
+    if (!parsed) break;
+    messages.push_back(parsed->message);
+    offset += parsed->consumed;
+  }
+  EXPECT_EQ(offset, bytes.size());
+  return messages;
+}
+
+struct DataRoundFixture : ::testing::Test {
+  void SetUp() override {
+    logger.set_sink([](core::LogLevel, std::string_view) {});
+    sonar = &add(protocol::kSonarCode, Access::kRead);
+    laser = &add(protocol::kLaserCode, Access::kRead);
+    position = &add(protocol::kPositionCode, Access::kWrite);  // registered write-only
+    client.port = 6665;
+  }
+  core::Device& add(std::uint16_t code, Access registered) {
+    return devices.add(std::make_unique<core::Device>(
+        core::DeviceKey{6665, {code, 0}}, core::DeviceInfo{"counting", "", registered, {}, false},
+        std::make_unique<core::testing::CountingDriver>(counts), clock, logger));
+  }
+  void open(core::Device& device, char access) {
+    client.subscriptions.request(device.address(), static_cast<std::uint8_t>(access), &device);
+  }
+
+  core::testing::CallCounts counts;
+  core::ManualClock clock;
+  core::Logger logger;
+  core::DeviceTable devices;
+  ClientState client;
+  core::Device* sonar = nullptr;
+  core::Device* laser = nullptr;
+  core::Device* position = nullptr;
+};
+
+TEST_F(DataRoundFixture, EmptyRoundIsExactlyOneSynch) {
+  const auto round = build_data_round(client, devices, {42, 7});
+  EXPECT_EQ(round.data_messages, 0u);
+  EXPECT_EQ(round.bytes, (Bytes{0x58, 0x78, 0, 5, 0, 1, 0, 0,   // stx, SYNCH, player:0
+                                0, 0, 0, 42, 0, 0, 0, 7,        // time
+                                0, 0, 0, 42, 0, 0, 0, 7,        // timestamp
+                                0, 0, 0, 0, 0, 0, 0, 0}));      // reserved, size
+}
+
+TEST_F(DataRoundFixture, SendsReadableDevicesInSubscriptionOrderThenSynch) {
+  open(*laser, 'r');
+  open(*sonar, 'a');
+  open(*position, 'a');  // write-only driver: never data
+  laser->publish({1, 2, 3}, {10, 0});
+  sonar->publish({9}, {11, 0});
+  position->publish({7}, {12, 0});
+  const auto messages = split(build_data_round(client, devices, {20, 0}).bytes);
+  ASSERT_EQ(messages.size(), 3u);
+  EXPECT_EQ(messages[0].type(), MessageType::kData);
+  EXPECT_EQ(messages[0].device().interface, protocol::kLaserCode);
+  EXPECT_EQ(messages[0].payload, (Bytes{1, 2, 3}));
+  EXPECT_EQ(messages[0].time(), (protocol::Timestamp{20, 0}));
+  EXPECT_EQ(messages[0].timestamp(), (protocol::Timestamp{10, 0}));
+  EXPECT_EQ(messages[1].device().interface, protocol::kSonarCode);
+  EXPECT_EQ(messages[2].type(), MessageType::kSynch);
+}
+
+TEST_F(DataRoundFixture, NewModesSkipDataAlreadySentAllModesResend) {
+  open(*laser, 'r');
+  open(*sonar, 'w');  // write access: no data
+  laser->publish({1}, {10, 0});
+  sonar->publish({2}, {10, 0});
+  EXPECT_EQ(build_data_round(client, devices, {}).data_messages, 1u);
+  EXPECT_EQ(build_data_round(client, devices, {}).data_messages, 0u);
+  laser->publish({1}, {10, 500});
+  EXPECT_EQ(build_data_round(client, devices, {}).data_messages, 1u);
+  client.mode = protocol::DataMode::kPushAll;
+  EXPECT_EQ(build_data_round(client, devices, {}).data_messages, 1u);
+  EXPECT_EQ(build_data_round(client, devices, {}).data_messages, 1u);
+}
+
+TEST_F(DataRoundFixture, NothingBeforeTheFirstPublishEvenInAllModes) {
+  client.mode = protocol::DataMode::kPullAll;
+  open(*laser, 'r');
+  EXPECT_EQ(build_data_round(client, devices, {}).data_messages, 0u);
+}
+
+TEST_F(DataRoundFixture, ClosedDevicesStopSending) {
+  open(*laser, 'r');
+  laser->publish({1}, {10, 0});
+  open(*laser, 'c');
+  EXPECT_EQ(build_data_round(client, devices, {}).data_messages, 0u);
+}
+
+}  // namespace
+}  // namespace playerkit::server

@@ -1,0 +1,52 @@
+#pragma once
+// Splits a client's byte stream into Player messages, and survives garbage.
+//
+// Bytes go in as they arrive; whole messages come out. A stream that does not
+// start with the "Xx" marker is scanned forward to the next marker (the bytes
+// skipped are reported once per run). A header announcing more than the
+// largest payload a 1.5 client can send is reported and its body skipped, so
+// the connection stays usable; an absurd size (beyond kMaxSkippableSize) is
+// treated as garbage and scanned past instead, so a corrupt header cannot make
+// us swallow the rest of the stream.
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <variant>
+#include <vector>
+
+#include "protocol/message.hpp"
+
+namespace playerkit::server {
+
+struct SkippedBytes {
+  std::size_t count = 0;
+};
+
+struct OversizeMessage {
+  protocol::MessageHeader header;  // its body is discarded
+};
+
+using FrameEvent = std::variant<protocol::Message, SkippedBytes, OversizeMessage>;
+
+class FrameReader {
+ public:
+  static constexpr std::size_t kMaxSkippableSize = 1 << 20;
+
+  // Appends the bytes and returns every event they complete, in stream order.
+  std::vector<FrameEvent> feed(std::span<const std::uint8_t> bytes);
+
+  // Bytes held back waiting for the rest of a message.
+  [[nodiscard]] std::size_t buffered() const { return buffer_.size() - start_; }
+
+ private:
+  void drop(std::size_t count);
+  void flush_skipped(std::vector<FrameEvent>& events);
+
+  std::vector<std::uint8_t> buffer_;
+  std::size_t start_ = 0;            // first unconsumed byte of buffer_
+  std::size_t body_to_discard_ = 0;  // rest of an oversize message
+  std::size_t skipped_ = 0;          // garbage in the current run
+};
+
+}  // namespace playerkit::server
