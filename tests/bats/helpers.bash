@@ -5,3 +5,37 @@ build_dir="${PLAYERKIT_BUILD_DIR:-$repo_root/build}"
 player_serve="$build_dir/tools/player-serve/player-serve"
 wire_roundtrip="$build_dir/examples/wire-roundtrip/wire-roundtrip"
 bats_require_minimum_version 1.5.0
+battery_plugin="$build_dir/examples/plugin-driver/libplayerkit_battery_plugin.so"
+
+# start_server LOGFILE ARGS...: runs player-serve in the background with its
+# stderr in LOGFILE; sets server_pid, and server_port from the first
+# "listening on port N" line (waits at most 10 s for it).
+start_server() {
+  local log="$1"
+  shift
+  "$player_serve" "$@" 2>"$log" &
+  server_pid=$!
+  server_port=""
+  for _ in $(seq 1 100); do
+    server_port="$(sed -n 's/.*listening on port \([0-9]*\).*/\1/p' "$log" | head -n 1)"
+    [ -n "$server_port" ] && return 0
+    kill -0 "$server_pid" 2>/dev/null || return 1
+    sleep 0.1
+  done
+  return 1
+}
+
+# wait_for_exit PID: waits at most 10 s; sets exit_status (or fails).
+wait_for_exit() {
+  local pid="$1"
+  for _ in $(seq 1 100); do
+    if ! kill -0 "$pid" 2>/dev/null; then
+      wait "$pid"
+      exit_status=$?
+      return 0
+    fi
+    sleep 0.1
+  done
+  kill -KILL "$pid"
+  return 1
+}

@@ -67,13 +67,15 @@ void register_test_drivers(core::DriverRegistry& registry) {
 }
 
 TestServer::TestServer(const std::string& config_text, server::ServerOptions options,
-                       int extra_ports) {
+                       int extra_ports,
+                       const std::function<void(core::DriverRegistry&)>& add_drivers) {
   logger_.set_level(core::LogLevel::kDebug);
   logger_.set_sink([this](core::LogLevel level, std::string_view line) {
     std::lock_guard lock(log_mutex_);
     log_.push_back(std::string(core::to_string(level)) + ": " + std::string(line));
   });
   register_test_drivers(registry_);
+  if (add_drivers) add_drivers(registry_);
   options.bind_address = "127.0.0.1";
   server_ = std::make_unique<server::Server>(devices_, clock_, logger_, options);
   for (int i = 0; i <= extra_ports; ++i) ports_.push_back(server_->listen(0));

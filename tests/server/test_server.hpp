@@ -27,7 +27,8 @@ void register_test_drivers(core::DriverRegistry& registry);
 class TestServer {
  public:
   explicit TestServer(const std::string& config_text, server::ServerOptions options = {},
-                      int extra_ports = 0);
+                      int extra_ports = 0,
+                      const std::function<void(core::DriverRegistry&)>& add_drivers = {});
   ~TestServer();
   TestServer(const TestServer&) = delete;
   TestServer& operator=(const TestServer&) = delete;

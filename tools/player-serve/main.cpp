@@ -8,14 +8,22 @@
 #include <CLI/CLI.hpp>
 
 #include "check_config.hpp"
+#include "serve.hpp"
 
 namespace {
 
 constexpr const char* kExamples = R"(Examples:
+  player-serve robot.cfg               serve robot.cfg on port 6665 until Ctrl-C
+  player-serve -p 7000 robot.cfg       devices outside robot sections on port 7000
+  player-serve -p 0 robot.cfg          any free port; the log line says which
+  player-serve -k secret robot.cfg     clients must authenticate with key "secret"
+  player-serve -d ./libmydriver.so robot.cfg   load extra drivers from a plugin
   player-serve --check robot.cfg       validate robot.cfg and list its devices
-  player-serve -p 7000 robot.cfg       serve robot.cfg on port 7000
 
-Exit status: 0 success, 1 runtime error, 2 usage error or invalid configuration.)";
+Signals: SIGINT, SIGTERM and SIGHUP stop accepting clients, shut every device
+down and exit 0.
+Exit status: 0 success, 1 runtime error (port in use, plugin or device set-up
+failed), 2 usage error or invalid configuration.)";
 
 }  // namespace
 
@@ -26,11 +34,27 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("player-serve (playerkit) ") + PLAYERKIT_VERSION +
                                         ", Player protocol " + PLAYERKIT_PLAYER_VERSION);
 
-  std::string config_path;
-  std::uint16_t port = 6665;
+  playerkit::serve::ServeOptions options;
   bool check = false;
-  app.add_option("CONFIG", config_path, "configuration file (.cfg)")->required();
-  app.add_option("-p,--port", port, "TCP port for devices outside a robot section")->capture_default_str();
+  bool quiet = false;
+  bool verbose = false;
+  std::string readlog;
+  double readlog_speed = 1.0;
+  std::string stage_directory;
+  std::string gazebo_id;
+  std::string key;
+  app.add_option("CONFIG", options.config_path, "configuration file (.cfg)")->required();
+  app.add_option("-p,--port", options.port, "TCP port for devices outside a robot section")
+      ->capture_default_str();
+  app.add_option("-k,--key", key, "require clients to authenticate with this key (31 characters used)");
+  app.add_option("-d,--plugin", options.plugins, "load drivers from this shared object (repeatable)");
+  app.add_option("--bind", options.bind_address, "address to listen on")->capture_default_str();
+  app.add_option("-r,--readlog", readlog, "replay this log file (not built yet)");
+  app.add_option("-f,--readlogspeed", readlog_speed, "replay speed factor for -r");
+  app.add_option("-s", stage_directory, "Stage devices (not available in playerkit)");
+  app.add_option("-g", gazebo_id, "Gazebo server (not available in playerkit)");
+  app.add_flag("-q,--quiet", quiet, "errors only");
+  app.add_flag("-v,--verbose", verbose, "also debug messages (client traffic problems, set-up)");
   app.add_flag("--check", check, "validate the configuration, list its devices, and exit");
 
   try {
@@ -39,9 +63,19 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : 2;
   }
 
-  if (check) return playerkit::serve::check_config(config_path, port, std::cout, std::cerr);
+  if (!stage_directory.empty() || !gazebo_id.empty()) {
+    std::cerr << "player-serve: " << (stage_directory.empty() ? "Gazebo (-g)" : "Stage (-s)")
+              << " is not available: playerkit serves real and logged devices only\n";
+    return 2;
+  }
+  if (!readlog.empty()) {
+    std::cerr << "player-serve: readlog (-r) is not built yet\n";
+    return 1;
+  }
+  if (check) return playerkit::serve::check_config(options.config_path, options.port, std::cout, std::cerr);
 
-  std::cerr << "player-serve: serving devices is not built yet; "
-               "--check validates a configuration\n";
-  return 1;
+  if (!key.empty()) options.auth_key = key;
+  if (quiet) options.log_level = playerkit::core::LogLevel::kError;
+  if (verbose) options.log_level = playerkit::core::LogLevel::kDebug;
+  return playerkit::serve::serve(options);
 }

@@ -1,0 +1,100 @@
+#include "serve.hpp"
+
+#include <algorithm>
+#include <exception>
+
+#include "config/config_file.hpp"
+#include "config/errors.hpp"
+#include "core/device_table.hpp"
+#include "core/driver_registry.hpp"
+#include "core/instantiate.hpp"
+#include "core/plugin.hpp"
+#include "drivers/builtin.hpp"
+#include "server/server.hpp"
+
+namespace playerkit::serve {
+
+namespace {
+
+constexpr int kFailure = 1;
+constexpr int kBadConfig = 2;
+
+}  // namespace
+
+int serve(const ServeOptions& options) {
+  core::Logger logger("player-serve");
+  logger.set_level(options.log_level);
+  core::WallClock clock;
+
+  core::DriverRegistry registry;
+  drivers::register_builtin_drivers(registry);
+  for (const std::string& plugin : options.plugins) {
+    try {
+      core::load_driver_plugin(plugin, registry);
+      logger.info("loaded plugin " + plugin);
+    } catch (const core::PluginError& e) {
+      logger.error(e.what());
+      return kFailure;
+    }
+  }
+
+  server::ServerOptions server_options;
+  server_options.bind_address = options.bind_address;
+  server_options.auth_key = options.auth_key;
+  core::DeviceTable devices;
+  server::Server server(devices, clock, logger, server_options);
+
+  try {
+    // With -p 0 the port is only known once bound, and devices outside robot
+    // sections are keyed by it: bind first, then read the configuration.
+    std::uint16_t default_port = options.port;
+    std::vector<std::uint16_t> bound;
+    if (options.port == 0) {
+      default_port = server.listen(0);
+      bound.push_back(default_port);
+    }
+    const auto config = config::ConfigFile::load(options.config_path,
+                                                 core::load_options_for(registry, default_port));
+    for (const auto& warning : config.warnings()) logger.warning(warning.to_string());
+    core::instantiate_devices(config, registry, devices, clock, logger);
+    for (const auto& warning : config.unused_properties()) logger.warning(warning.to_string());
+    if (devices.empty()) {
+      logger.error(options.config_path + ": no devices declared, nothing to serve");
+      return kBadConfig;
+    }
+    for (std::uint16_t port : config.ports()) {
+      if (port == 0) {
+        logger.error(options.config_path + ": a robot section with port 0; only -p 0 picks a free port");
+        return kBadConfig;
+      }
+      if (std::find(bound.begin(), bound.end(), port) == bound.end()) {
+        server.listen(port);
+        bound.push_back(port);
+      }
+    }
+  } catch (const config::ConfigError& e) {
+    logger.error(e.what());
+    return kBadConfig;
+  } catch (const server::ServerError& e) {
+    logger.error(e.what());
+    return kFailure;
+  }
+
+  try {
+    devices.prepare_all();
+    devices.start_alwayson();
+  } catch (const std::exception& e) {
+    logger.error(e.what());
+    devices.shutdown_all();
+    return kFailure;
+  }
+
+  server.stop_on_signals();
+  logger.info("serving " + std::to_string(devices.size()) + " devices");
+  server.run();
+  devices.shutdown_all();
+  logger.info("all devices shut down");
+  return 0;
+}
+
+}  // namespace playerkit::serve

@@ -1,0 +1,28 @@
+#pragma once
+// `player-serve CONFIG`: load drivers and the configuration, serve until a
+// signal, shut every device down.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/logger.hpp"
+
+namespace playerkit::serve {
+
+struct ServeOptions {
+  std::string config_path;
+  std::uint16_t port = 6665;  // 0: any free port (printed at start-up)
+  std::string bind_address = "0.0.0.0";
+  std::optional<std::string> auth_key;
+  std::vector<std::string> plugins;
+  core::LogLevel log_level = core::LogLevel::kInfo;
+};
+
+// Returns the exit status: 0 after a clean shutdown on SIGINT/SIGTERM/SIGHUP,
+// 1 when serving fails (port in use, plugin, device set-up), 2 for a bad
+// configuration. Diagnostics go to stderr.
+int serve(const ServeOptions& options);
+
+}  // namespace playerkit::serve
