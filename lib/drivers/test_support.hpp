@@ -3,10 +3,9 @@
 // them (registry + config text + instantiate_devices), and bounded waiting for
 // things that happen on other threads.
 
-#include <gtest/gtest.h>
-
 #include <chrono>
 #include <cstdint>
+#include <stdexcept>
 #include <string_view>
 #include <thread>
 #include <vector>
