@@ -105,6 +105,10 @@ void Device::publish(std::vector<std::uint8_t> payload, Timestamp timestamp) {
     sample->timestamp = timestamp;
     sample->sequence = data_->sequence + 1;
     data_ = std::move(sample);
+    if (queues_data()) {
+      history_.push_back(data_);
+      if (history_.size() > info_.limits.data_queue) history_.pop_front();
+    }
   }
   for (DeviceListener* listener : listeners_copy()) listener->data_published(*this);
 }
@@ -112,6 +116,15 @@ void Device::publish(std::vector<std::uint8_t> payload, Timestamp timestamp) {
 std::shared_ptr<const DataSample> Device::latest_data() const {
   std::lock_guard lock(mutex_);
   return data_;
+}
+
+std::vector<std::shared_ptr<const DataSample>> Device::data_since(std::uint64_t sequence) const {
+  std::lock_guard lock(mutex_);
+  std::vector<std::shared_ptr<const DataSample>> samples;
+  for (const auto& sample : history_) {
+    if (sample->sequence > sequence) samples.push_back(sample);
+  }
+  return samples;
 }
 
 Device::CommandStatus Device::put_command(ClientId client, std::span<const std::uint8_t> payload) {
@@ -122,11 +135,21 @@ Device::CommandStatus Device::put_command(ClientId client, std::span<const std::
   std::lock_guard lock(mutex_);
   command_ = Command{{payload.begin(), payload.end()}, clock_.now(), client};
   command_taken_ = false;
+  if (info_.limits.command_queue > 0) {
+    if (command_queue_.size() == info_.limits.command_queue) command_queue_.pop_front();
+    command_queue_.push_back(*command_);
+  }
   return CommandStatus::kAccepted;
 }
 
 std::optional<Command> Device::take_command() {
   std::lock_guard lock(mutex_);
+  if (info_.limits.command_queue > 0) {
+    if (command_queue_.empty()) return std::nullopt;
+    Command oldest = std::move(command_queue_.front());
+    command_queue_.pop_front();
+    return oldest;
+  }
   if (command_taken_ || !command_) return std::nullopt;
   command_taken_ = true;
   return command_;

@@ -45,6 +45,14 @@ struct DeviceLimits {
   // Requests waiting for the driver. 1.5 drivers mostly used 1; a few more lets
   // several clients configure the same device without spurious ERRs.
   std::size_t request_queue = 8;
+  // 0: clients get the latest sample only (sensors). N > 0: the device keeps
+  // its last N samples and every client gets each one once, in order
+  // (messages: comms, where a burst must not collapse into its last packet).
+  std::size_t data_queue = 0;
+  // 0: a command replaces the previous one (actuators: only the newest
+  // matters). N > 0: up to N commands wait and take_command() hands them out
+  // oldest first (messages to send); when full, the oldest is dropped.
+  std::size_t command_queue = 0;
 };
 
 struct DeviceInfo {
@@ -103,12 +111,16 @@ class Device {
   void publish(std::vector<std::uint8_t> payload) { publish(std::move(payload), clock_.now()); }
   // Never null; sequence 0 until the first publish.
   [[nodiscard]] std::shared_ptr<const DataSample> latest_data() const;
+  [[nodiscard]] bool queues_data() const { return info_.limits.data_queue > 0; }
+  // Queued devices: the kept samples published after `sequence`, oldest first
+  // (at most data_queue of them; older ones are gone).
+  [[nodiscard]] std::vector<std::shared_ptr<const DataSample>> data_since(std::uint64_t sequence) const;
 
   // --- commands (server side writes, driver side takes)
   enum class CommandStatus { kAccepted, kReadOnly, kWrongSize };
   // Checks the size against the interface's command struct (wire-format.md §6).
   CommandStatus put_command(ClientId client, std::span<const std::uint8_t> payload);
-  // The newest command not taken yet.
+  // The newest command not taken yet; on a command-queue device the oldest.
   std::optional<Command> take_command();
   // The newest command, taken or not.
   [[nodiscard]] std::optional<Command> latest_command() const;
@@ -144,8 +156,10 @@ class Device {
 
   mutable std::mutex mutex_;  // everything below
   std::shared_ptr<const DataSample> data_;
+  std::deque<std::shared_ptr<const DataSample>> history_;  // queued devices only
   std::optional<Command> command_;
   bool command_taken_ = true;
+  std::deque<Command> command_queue_;  // command-queue devices only
   std::deque<Request> requests_;
   std::vector<Reply> replies_;
   std::vector<DeviceListener*> listeners_;

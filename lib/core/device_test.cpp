@@ -207,3 +207,48 @@ TEST(DeviceKeyTest, PrintsAddressAndPort) {
 
 }  // namespace
 }  // namespace playerkit::core
+
+namespace playerkit::core {
+namespace {
+
+TEST_F(DeviceFixture, QueuedDeviceKeepsItsLastSamplesInOrder) {
+  DeviceInfo info{"queued", "", Access::kRead, DeviceLimits{1, 3}, false};
+  Device device(DeviceKey{6665, {protocol::kCommsCode, 0}}, info,
+                std::make_unique<CountingDriver>(counts), clock, logger);
+  EXPECT_TRUE(device.queues_data());
+  for (std::uint8_t i = 1; i <= 5; ++i) device.publish({i});
+  const auto all = device.data_since(0);
+  ASSERT_EQ(all.size(), 3u);  // the two oldest fell out
+  EXPECT_EQ(all[0]->payload, (std::vector<std::uint8_t>{3}));
+  EXPECT_EQ(all[2]->payload, (std::vector<std::uint8_t>{5}));
+  EXPECT_EQ(device.data_since(4).size(), 1u);
+  EXPECT_TRUE(device.data_since(5).empty());
+}
+
+TEST_F(DeviceFixture, SensorDeviceKeepsNoHistory) {
+  auto device = make();
+  device->publish({1});
+  EXPECT_FALSE(device->queues_data());
+  EXPECT_TRUE(device->data_since(0).empty());
+}
+
+}  // namespace
+}  // namespace playerkit::core
+
+namespace playerkit::core {
+namespace {
+
+TEST_F(DeviceFixture, CommandQueueDeviceHandsOutEveryCommandOldestFirst) {
+  DeviceInfo info{"queued", "", Access::kAll, DeviceLimits{1, 0, 2}, false};
+  Device device(DeviceKey{6665, {protocol::kCommsCode, 0}}, info,
+                std::make_unique<CountingDriver>(counts), clock, logger);
+  for (std::uint8_t i = 1; i <= 3; ++i) {
+    EXPECT_EQ(device.put_command(1, std::vector<std::uint8_t>{i}), Device::CommandStatus::kAccepted);
+  }
+  EXPECT_EQ(device.take_command()->payload, (std::vector<std::uint8_t>{2}));  // 1 was dropped
+  EXPECT_EQ(device.take_command()->payload, (std::vector<std::uint8_t>{3}));
+  EXPECT_FALSE(device.take_command());
+}
+
+}  // namespace
+}  // namespace playerkit::core

@@ -24,6 +24,18 @@ DataRound build_data_round(ClientState& client, const core::DeviceTable& devices
     if (!SubscriptionTable::can_read(entry.access)) continue;
     const core::Device* device = devices.find(client.port, entry.device);
     if (device == nullptr || !device->readable()) continue;
+    if (device->queues_data()) {
+      // Messages, not readings: each one once, in order, whatever the mode.
+      for (const auto& sample : device->data_since(entry.last_sequence)) {
+        append_message(round.bytes,
+                       protocol::make_header(protocol::MessageType::kData, entry.device, now,
+                                             sample->timestamp),
+                       sample->payload);
+        ++round.data_messages;
+        entry.last_sequence = sample->sequence;
+      }
+      continue;
+    }
     const auto sample = device->latest_data();
     // 1.5 sent whatever the buffer held before the first publish; we send nothing.
     if (sample->sequence == 0) continue;

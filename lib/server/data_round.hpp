@@ -19,7 +19,8 @@ struct DataRound {
 // Walks the client's subscriptions in order. A device is included when the
 // client may read it, the driver registered read access and it has published;
 // in the NEW modes only if its timestamp differs from the last one this client
-// got (which is then remembered). Header time is `now`.
+// got (which is then remembered). Devices that queue data (comms) send every
+// sample this client has not had yet, oldest first. Header time is `now`.
 DataRound build_data_round(ClientState& client, const core::DeviceTable& devices,
                            protocol::Timestamp now);
 

@@ -107,3 +107,30 @@ TEST_F(DataRoundFixture, ClosedDevicesStopSending) {
 
 }  // namespace
 }  // namespace playerkit::server
+
+namespace playerkit::server {
+namespace {
+
+TEST_F(DataRoundFixture, QueuedDeviceSendsEveryMessageOnceFromSubscriptionOn) {
+  core::Device& comms = devices.add(std::make_unique<core::Device>(
+      core::DeviceKey{6665, {protocol::kCommsCode, 0}},
+      core::DeviceInfo{"queued", "", Access::kAll, core::DeviceLimits{1, 8}, false},
+      std::make_unique<core::testing::CountingDriver>(counts), clock, logger));
+  comms.publish({0}, {1, 0});  // before the client subscribed: not for it
+  open(comms, 'r');
+  comms.publish({1}, {2, 0});
+  comms.publish({2}, {2, 0});  // same timestamp: still a new message
+  comms.publish({3}, {3, 0});
+  auto messages = split(build_data_round(client, devices, {}).bytes);
+  ASSERT_EQ(messages.size(), 4u);
+  EXPECT_EQ(messages[0].payload, (Bytes{1}));
+  EXPECT_EQ(messages[1].payload, (Bytes{2}));
+  EXPECT_EQ(messages[2].payload, (Bytes{3}));
+  client.mode = protocol::DataMode::kPushAll;  // messages are not repeated in ALL modes
+  EXPECT_EQ(build_data_round(client, devices, {}).data_messages, 0u);
+  comms.publish({4}, {4, 0});
+  EXPECT_EQ(build_data_round(client, devices, {}).data_messages, 1u);
+}
+
+}  // namespace
+}  // namespace playerkit::server

@@ -50,6 +50,10 @@ Access SubscriptionTable::request(DeviceAddress address, std::uint8_t requested,
     }
   }
   for (int i = needed; i < held && device != nullptr; ++i) device->unsubscribe();
+  // A queued device's messages reach a client from the moment it can read.
+  if (!can_read(entry.access) && can_read(wanted) && device != nullptr) {
+    entry.last_sequence = device->latest_data()->sequence;
+  }
   // Closing what was never open keeps 'e' (or 'c'), as 1.5 did.
   if (!(wanted == Access::kClose && held == 0)) entry.access = wanted;
   return entry.access;

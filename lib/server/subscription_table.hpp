@@ -24,6 +24,7 @@ class SubscriptionTable {
     DeviceAddress device;
     Access access = Access::kError;
     protocol::Timestamp last_sent;  // timestamp of the last sample sent (NEW modes)
+    std::uint64_t last_sequence = 0;  // queued devices: the last sample this client got
   };
 
   // Moves this client's access on `address` towards `requested`, subscribing

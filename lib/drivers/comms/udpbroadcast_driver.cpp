@@ -49,8 +49,9 @@ void UdpBroadcastDriver::open() {
     throw core::DriverError("udpbroadcast: cannot listen on UDP port " +
                             std::to_string(destination_.port) + ": " + e.what());
   }
-  // A command written before the subscription would otherwise go out now.
-  (void)device().take_command();
+  // Commands written before the subscription would otherwise go out now.
+  while (device().take_command()) {
+  }
 }
 
 void UdpBroadcastDriver::close() { socket_.reset(); }
@@ -58,19 +59,19 @@ void UdpBroadcastDriver::close() { socket_.reset(); }
 void UdpBroadcastDriver::run(std::stop_token stop) {
   while (!stop.stop_requested()) {
     device().service_requests();
-    send_newest_command();
+    send_waiting_commands();
     if (socket_->wait_readable(kPollInterval)) publish_waiting_datagrams();
   }
 }
 
-void UdpBroadcastDriver::send_newest_command() {
-  const auto command = device().take_command();
-  if (!command) return;
-  try {
-    socket_->send_to(destination_, command->payload);
-  } catch (const std::system_error& e) {
-    // Delivery is best effort (manual §7.43); keep serving.
-    device().logger().warning(device().name() + ": message not sent: " + e.what());
+void UdpBroadcastDriver::send_waiting_commands() {
+  while (const auto command = device().take_command()) {
+    try {
+      socket_->send_to(destination_, command->payload);
+    } catch (const std::system_error& e) {
+      // Delivery is best effort (manual §7.43); keep serving.
+      device().logger().warning(device().name() + ": message not sent: " + e.what());
+    }
   }
 }
 
@@ -107,7 +108,9 @@ core::DriverSpec udpbroadcast_driver_spec() {
         context.section.read_int("port", kDefaultBroadcastPort));
     return std::make_unique<UdpBroadcastDriver>(destination);
   };
-  spec.limits = core::DeviceLimits{};
+  // Every command is sent and every datagram reaches every client once, as
+  // 1.5's per-client queues did: messages, unlike motor commands, add up.
+  spec.limits = core::DeviceLimits{.request_queue = 8, .data_queue = 64, .command_queue = 64};
   spec.summary = "sends comms commands as UDP broadcasts and publishes every datagram heard";
   return spec;
 }

@@ -37,7 +37,7 @@ class UdpBroadcastDriver final : public core::ThreadedDriver {
   void run(std::stop_token stop) override;
 
  private:
-  void send_newest_command();
+  void send_waiting_commands();
   void publish_waiting_datagrams();
 
   Ipv4Endpoint destination_;
