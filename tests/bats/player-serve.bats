@@ -77,6 +77,12 @@ teardown() {
   [[ "$output" == *"Gazebo (-g) is not available"* ]]
 }
 
+@test "-t udp says that only TCP is available" {
+  run "$player_serve" -t udp "$cfg"
+  [ "$status" -eq 2 ]
+  [[ "$output" == *"transport 'udp' is not available"* ]]
+}
+
 @test "-d loads a driver plugin; a missing plugin is an error, exit 1" {
   printf 'power:0 ( driver "simbattery" rate 5 )\n' > "$cfg"
   start_server "$BATS_TEST_TMPDIR/log" -p 0 -d "$battery_plugin" "$cfg"

@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
   std::string stage_directory;
   std::string gazebo_id;
   std::string key;
+  std::string transport = "tcp";
   app.add_option("CONFIG", options.config_path, "configuration file (.cfg)")->required();
   app.add_option("-p,--port", options.port, "TCP port for devices outside a robot section")
       ->capture_default_str();
@@ -51,6 +52,7 @@ int main(int argc, char** argv) {
   app.add_option("--bind", options.bind_address, "address to listen on")->capture_default_str();
   app.add_option("-r,--readlog", readlog, "replay this log file (not built yet)");
   app.add_option("-f,--readlogspeed", readlog_speed, "replay speed factor for -r");
+  app.add_option("-t,--transport", transport, "tcp (udp is not available)")->capture_default_str();
   app.add_option("-s", stage_directory, "Stage devices (not available in playerkit)");
   app.add_option("-g", gazebo_id, "Gazebo server (not available in playerkit)");
   app.add_flag("-q,--quiet", quiet, "errors only");
@@ -66,6 +68,11 @@ int main(int argc, char** argv) {
   if (!stage_directory.empty() || !gazebo_id.empty()) {
     std::cerr << "player-serve: " << (stage_directory.empty() ? "Gazebo (-g)" : "Stage (-s)")
               << " is not available: playerkit serves real and logged devices only\n";
+    return 2;
+  }
+  if (transport != "tcp") {
+    std::cerr << "player-serve: transport '" << transport
+              << "' is not available: playerkit serves clients over TCP only\n";
     return 2;
   }
   if (!readlog.empty()) {
