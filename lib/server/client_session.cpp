@@ -113,7 +113,7 @@ void ClientSession::handle_authentication(const protocol::Message& message) {
     return;
   }
   state_.auth_pending = false;
-  send_reply(MessageType::kAck, message.device(), {}, context_.clock.now());
+  send_reply(MessageType::kAck, message.device(), {});
   rearm_push_timer();
 }
 
@@ -123,7 +123,7 @@ void ClientSession::handle_request(const protocol::Message& message) {
     return;
   }
   PlayerReply reply = answer_player_request(state_, message.payload, context_.devices);
-  send_reply(reply.type, message.device(), reply.payload, context_.clock.now());
+  send_reply(reply.type, message.device(), reply.payload);
   if (reply.schedule_changed) rearm_push_timer();
   if (reply.round_requested) request_round();
 }
@@ -134,7 +134,7 @@ void ClientSession::handle_device_request(const protocol::Message& message) {
   const Access access = state_.subscriptions.access(address);
   core::Device* device = context_.devices.find(state_.port, address);
   if (device == nullptr || !(SubscriptionTable::can_read(access) || SubscriptionTable::can_write(access))) {
-    send_reply(MessageType::kError, address, {}, now);
+    send_reply(MessageType::kError, address, {});
     return;
   }
   // 1.5 silently dropped empty requests and cut long ones to 4096 bytes; an
@@ -142,12 +142,12 @@ void ClientSession::handle_device_request(const protocol::Message& message) {
   if (message.payload.empty() || message.payload.size() > protocol::kMaxRequestReplySize) {
     warn_once("request-size", label() + ": request of " + std::to_string(message.payload.size()) +
                                   " bytes to " + device->name() + " refused");
-    send_reply(MessageType::kNack, address, {}, now);
+    send_reply(MessageType::kNack, address, {});
     return;
   }
   if (device->enqueue_request({state_.id, address, message.payload, now}) ==
       core::Device::RequestStatus::kQueueFull) {
-    send_reply(MessageType::kError, address, {}, now);
+    send_reply(MessageType::kError, address, {});
     return;
   }
   // Event-loop drivers answer right away, from this thread; threaded drivers
@@ -186,7 +186,7 @@ void ClientSession::handle_oversize(const protocol::MessageHeader& header) {
   warn_once("oversize", label() + ": dropped a message of " + std::to_string(header.size) +
                             " bytes (the limit is " + std::to_string(protocol::kMaxPayloadSize) + ")");
   if (!state_.auth_pending && header.type == static_cast<std::uint16_t>(MessageType::kRequest)) {
-    send_reply(MessageType::kNack, {header.device, header.device_index}, {}, context_.clock.now());
+    send_reply(MessageType::kNack, {header.device, header.device_index}, {});
   }
 }
 
@@ -204,8 +204,10 @@ void ClientSession::deliver_reply(const core::Reply& reply) {
 }
 
 void ClientSession::send_reply(MessageType type, protocol::DeviceAddress device,
-                               std::span<const std::uint8_t> payload, protocol::Timestamp timestamp) {
-  auto header = protocol::make_header(type, device, context_.clock.now(), timestamp);
+                               std::span<const std::uint8_t> payload,
+                               std::optional<protocol::Timestamp> produced) {
+  const auto now = context_.clock.now();
+  auto header = protocol::make_header(type, device, now, produced.value_or(now));
   enqueue(protocol::encode_message(header, payload));
   if (output_bytes_ > context_.options.max_pending_reply_bytes) {
     close("does not read its replies (" + std::to_string(output_bytes_) + " bytes waiting)");

@@ -16,6 +16,7 @@
 #include <deque>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -73,8 +74,11 @@ class ClientSession : public std::enable_shared_from_this<ClientSession> {
   void handle_command(const protocol::Message& message);
   void handle_oversize(const protocol::MessageHeader& header);
 
+  // Header time is now; timestamp is when a driver produced the reply, or now
+  // for the server's own answers.
   void send_reply(protocol::MessageType type, protocol::DeviceAddress device,
-                  std::span<const std::uint8_t> payload, protocol::Timestamp timestamp);
+                  std::span<const std::uint8_t> payload,
+                  std::optional<protocol::Timestamp> produced = std::nullopt);
   void enqueue(std::vector<std::uint8_t> bytes);
   void request_round();
   void write_more();
