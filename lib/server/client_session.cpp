@@ -183,9 +183,13 @@ void ClientSession::handle_command(const protocol::Message& message) {
 }
 
 void ClientSession::handle_oversize(const protocol::MessageHeader& header) {
+  if (state_.auth_pending) {  // any first message but a good AUTH ends the connection
+    close("authentication failed (oversize first message)");
+    return;
+  }
   warn_once("oversize", label() + ": dropped a message of " + std::to_string(header.size) +
                             " bytes (the limit is " + std::to_string(protocol::kMaxPayloadSize) + ")");
-  if (!state_.auth_pending && header.type == static_cast<std::uint16_t>(MessageType::kRequest)) {
+  if (header.type == static_cast<std::uint16_t>(MessageType::kRequest)) {
     send_reply(MessageType::kNack, {header.device, header.device_index}, {});
   }
 }

@@ -91,6 +91,11 @@ TEST(RobustnessTest, AuthenticationGatesEverythingButTheBanner) {
   impatient.send_request(kPlayer, Bytes{0, 1});  // DEVLIST before AUTH
   EXPECT_TRUE(impatient.wait_for_close(std::chrono::seconds(2)));
 
+  RawClient oversize(server.port());
+  oversize.read_banner();
+  oversize.send_request(kPlayer, Bytes(protocol::kMaxPayloadSize + 1, 0));
+  EXPECT_TRUE(oversize.wait_for_close(std::chrono::seconds(2)));
+
   RawClient right(server.port());
   right.read_banner();
   right.send_request({protocol::kPlayerCode, 3}, auth_payload("sesame"));
