@@ -89,3 +89,41 @@ TEST_F(DeviceTableFixture, PrepareReachesEveryDevice) {
 
 }  // namespace
 }  // namespace playerkit::core
+
+namespace playerkit::core {
+namespace {
+
+// A driver built on another device (as amcl uses a laser): it holds a
+// subscription on it exactly while it is itself subscribed.
+class DependentDriver : public Driver {
+ public:
+  explicit DependentDriver(Device& source) : source_(source) {}
+  void setup() override {
+    if (!source_.subscribe()) throw DriverError("source unavailable");
+  }
+  void shutdown() override { source_.unsubscribe(); }
+
+ private:
+  Device& source_;
+};
+
+TEST_F(DeviceTableFixture, DriversMaySubscribeToOtherDevices) {
+  Device& laser = add(6665, protocol::kLaserCode, 0);
+  Device& localize = table.add(std::make_unique<Device>(
+      DeviceKey{6665, {protocol::kLocalizeCode, 0}}, DeviceInfo{"dependent", "", Access::kRead, {}, false},
+      std::make_unique<DependentDriver>(laser), clock, logger));
+  ASSERT_TRUE(localize.subscribe());
+  EXPECT_EQ(laser.subscriptions(), 1);
+  EXPECT_EQ(counts.setup, 1);
+  localize.unsubscribe();
+  EXPECT_EQ(laser.subscriptions(), 0);
+  EXPECT_EQ(counts.shutdown, 1);
+  // At exit the dependent device goes first, then the one it used.
+  ASSERT_TRUE(localize.subscribe());
+  table.shutdown_all();
+  EXPECT_EQ(laser.subscriptions(), 0);
+  EXPECT_EQ(counts.shutdown, 2);
+}
+
+}  // namespace
+}  // namespace playerkit::core

@@ -312,9 +312,12 @@ void ClientSession::wait_for_push(std::uint64_t generation) {
     self->request_round();
     const unsigned hz = std::min<unsigned>(self->state_.frequency, self->context_.options.max_push_frequency);
     const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / hz));
-    // Keep the cadence steady; after a hiccup longer than a period, restart it.
+    // Keep the cadence and its phase: after a hiccup longer than a period,
+    // skip the missed slots rather than restart from now. Restarting would
+    // line up every client delayed by the same hiccup, and their rounds would
+    // go out in bursts from then on.
     self->next_push_ += period;
-    if (self->next_push_ <= now) self->next_push_ = now + period;
+    if (self->next_push_ <= now) self->next_push_ += period * ((now - self->next_push_) / period + 1);
     self->wait_for_push(generation);
   });
 }
