@@ -3,11 +3,9 @@
 // them (registry + config text + instantiate_devices), and bounded waiting for
 // things that happen on other threads.
 
-#include <chrono>
 #include <cstdint>
 #include <stdexcept>
 #include <string_view>
-#include <thread>
 #include <vector>
 
 #include "config/config_file.hpp"
@@ -18,21 +16,13 @@
 #include "core/instantiate.hpp"
 #include "core/logger.hpp"
 #include "drivers/builtin.hpp"
+#include "support/eventually.hpp"
 
 namespace playerkit::drivers::testing {
 
 inline constexpr std::uint16_t kTestPort = 6665;
 
-// Polls `condition` until it holds or `limit` passes; true if it held.
-template <class Condition>
-bool eventually(Condition condition, std::chrono::milliseconds limit = std::chrono::seconds(5)) {
-  const auto deadline = std::chrono::steady_clock::now() + limit;
-  while (!condition()) {
-    if (std::chrono::steady_clock::now() >= deadline) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  return true;
-}
+using ::playerkit::testing::eventually;
 
 // A request as the server would queue it for client 1.
 inline core::Request make_request(std::uint16_t interface, std::vector<std::uint8_t> payload) {

@@ -13,6 +13,7 @@
 #include "core/device_table.hpp"
 #include "core/driver_registry.hpp"
 #include "server/server.hpp"
+#include "support/eventually.hpp"
 
 namespace playerkit::testing {
 
@@ -55,9 +56,5 @@ class TestServer {
   std::thread thread_;
   bool stopped_ = false;
 };
-
-// Waits until `condition` holds, up to `timeout`; returns whether it did.
-bool eventually(const std::function<bool()>& condition,
-                std::chrono::milliseconds timeout = std::chrono::seconds(5));
 
 }  // namespace playerkit::testing
