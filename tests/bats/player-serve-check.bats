@@ -7,16 +7,16 @@ load helpers
   run "$player_serve" --check "$repo_root/data/config/post-hoc-localization.cfg"
   [ "$status" -eq 0 ]
   [[ "${lines[0]}" == *"post-hoc-localization.cfg: 3 devices, served on port 6665" ]]
-  [[ "$output" =~ localize:0\ +driver\ amcl ]]
+  [[ "$output" =~ localize:0\ +driver\ amcl\ \(not\ in\ this\ build\) ]]
   [[ "$output" == *'map_file "intel-lab-map.pgm"'* ]]
 }
 
 @test "--check shows robot names and always-on devices" {
   run "$player_serve" --check "$repo_root/data/config/messaging.cfg"
   [ "$status" -eq 0 ]
-  [[ "$output" =~ mcom:0\ +driver\ lifomcom,\ robot\ mailbox ]]
+  [[ "$output" =~ mcom:0\ +driver\ lifomcom,\ robot\ mailbox ]]  # built in: no mark
   run "$player_serve" --check "$repo_root/data/config/record.cfg"
-  [[ "$output" =~ null:0\ +driver\ writelog,\ always\ on ]]
+  [[ "$output" =~ null:0\ +driver\ writelog\ \(not\ in\ this\ build\),\ always\ on ]]
 }
 
 @test "--check -p changes the port of devices outside robot sections" {

@@ -28,7 +28,8 @@ std::string format_property(const config::Property& property) {
 
 }  // namespace
 
-int check_config(const std::string& path, std::uint16_t default_port, std::ostream& out,
+int check_config(const std::string& path, std::uint16_t default_port,
+                 const std::function<bool(std::string_view)>& available, std::ostream& out,
                  std::ostream& err) {
   config::LoadOptions options;
   options.default_port = default_port;
@@ -45,6 +46,7 @@ int check_config(const std::string& path, std::uint16_t default_port, std::ostre
     for (const auto& device : devices) {
       const std::string name = device.interface_name + ":" + std::to_string(device.address.index);
       out << "  " << std::left << std::setw(14) << name << " driver " << device.driver;
+      if (available && !available(device.driver)) out << " (not in this build)";
       if (ports.size() > 1) out << ", port " << device.port;
       if (!device.robot_name.empty()) out << ", robot " << device.robot_name;
       if (device.alwayson) out << ", always on";

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "check_config.hpp"
+#include "core/plugin.hpp"
 #include "serve.hpp"
 
 namespace {
@@ -79,7 +80,20 @@ int main(int argc, char** argv) {
     std::cerr << "player-serve: readlog (-r) is not built yet\n";
     return 1;
   }
-  if (check) return playerkit::serve::check_config(options.config_path, options.port, std::cout, std::cerr);
+  if (check) {
+    playerkit::core::Logger logger("player-serve");
+    logger.set_level(playerkit::core::LogLevel::kError);
+    try {
+      const auto registry = playerkit::serve::load_drivers(options.plugins, logger);
+      return playerkit::serve::check_config(
+          options.config_path, options.port,
+          [&registry](std::string_view driver) { return registry.contains(driver); }, std::cout,
+          std::cerr);
+    } catch (const playerkit::core::PluginError& e) {
+      std::cerr << "player-serve: " << e.what() << "\n";
+      return 1;
+    }
+  }
 
   if (!key.empty()) options.auth_key = key;
   if (quiet) options.log_level = playerkit::core::LogLevel::kError;

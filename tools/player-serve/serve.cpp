@@ -21,21 +21,27 @@ constexpr int kBadConfig = 2;
 
 }  // namespace
 
+core::DriverRegistry load_drivers(const std::vector<std::string>& plugins, core::Logger& logger) {
+  core::DriverRegistry registry;
+  drivers::register_builtin_drivers(registry);
+  for (const std::string& plugin : plugins) {
+    core::load_driver_plugin(plugin, registry);
+    logger.info("loaded plugin " + plugin);
+  }
+  return registry;
+}
+
 int serve(const ServeOptions& options) {
   core::Logger logger("player-serve");
   logger.set_level(options.log_level);
   core::WallClock clock;
 
   core::DriverRegistry registry;
-  drivers::register_builtin_drivers(registry);
-  for (const std::string& plugin : options.plugins) {
-    try {
-      core::load_driver_plugin(plugin, registry);
-      logger.info("loaded plugin " + plugin);
-    } catch (const core::PluginError& e) {
-      logger.error(e.what());
-      return kFailure;
-    }
+  try {
+    registry = load_drivers(options.plugins, logger);
+  } catch (const core::PluginError& e) {
+    logger.error(e.what());
+    return kFailure;
   }
 
   server::ServerOptions server_options;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/driver_registry.hpp"
 #include "core/logger.hpp"
 
 namespace playerkit::serve {
@@ -19,6 +20,9 @@ struct ServeOptions {
   std::vector<std::string> plugins;
   core::LogLevel log_level = core::LogLevel::kInfo;
 };
+
+// The built-in drivers plus those of the plugins. Throws core::PluginError.
+core::DriverRegistry load_drivers(const std::vector<std::string>& plugins, core::Logger& logger);
 
 // Returns the exit status: 0 after a clean shutdown on SIGINT/SIGTERM/SIGHUP,
 // 1 when serving fails (port in use, plugin, device set-up), 2 for a bad
