@@ -70,17 +70,17 @@ void ClientSession::read_more() {
                                                                  : "connection lost: " + ec.message());
                               return;
                             }
-                            for (const FrameEvent& event : self->reader_.feed(
+                            for (const protocol::FrameEvent& event : self->reader_.feed(
                                      std::span<const std::uint8_t>(self->read_buffer_.data(), n))) {
                               if (self->closed_) return;
                               if (const auto* message = std::get_if<protocol::Message>(&event)) {
                                 self->handle_message(*message);
-                              } else if (const auto* skipped = std::get_if<SkippedBytes>(&event)) {
+                              } else if (const auto* skipped = std::get_if<protocol::SkippedBytes>(&event)) {
                                 self->warn_once("garbage", self->label() + ": skipped " +
                                                                std::to_string(skipped->count) +
                                                                " bytes that were not a message");
                               } else {
-                                self->handle_oversize(std::get<OversizeMessage>(event).header);
+                                self->handle_oversize(std::get<protocol::OversizeMessage>(event).header);
                               }
                             }
                             self->read_more();

@@ -28,7 +28,7 @@
 #include "core/device_table.hpp"
 #include "core/logger.hpp"
 #include "server/client_state.hpp"
-#include "server/frame_reader.hpp"
+#include "protocol/frame_reader.hpp"
 #include "server/server_options.hpp"
 
 namespace playerkit::server {
@@ -97,7 +97,7 @@ class ClientSession : public std::enable_shared_from_this<ClientSession> {
   std::string peer_;
   bool closed_ = false;
 
-  FrameReader reader_;
+  protocol::FrameReader reader_;
   std::array<std::uint8_t, 16384> read_buffer_{};
 
   std::deque<std::vector<std::uint8_t>> output_;

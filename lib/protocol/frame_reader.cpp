@@ -1,15 +1,15 @@
-#include "server/frame_reader.hpp"
+#include "protocol/frame_reader.hpp"
 
 #include <algorithm>
 
 #include "protocol/constants.hpp"
 
-namespace playerkit::server {
+namespace playerkit::protocol {
 
 namespace {
 
-constexpr std::uint8_t kStxFirst = protocol::kStx >> 8;     // 'X'
-constexpr std::uint8_t kStxSecond = protocol::kStx & 0xFF;  // 'x'
+constexpr std::uint8_t kStxFirst = kStx >> 8;     // 'X'
+constexpr std::uint8_t kStxSecond = kStx & 0xFF;  // 'x'
 
 }  // namespace
 
@@ -52,10 +52,10 @@ std::vector<FrameEvent> FrameReader::feed(std::span<const std::uint8_t> bytes) {
       drop(next);
       continue;
     }
-    if (pending.size() < protocol::kHeaderSize) break;
-    const protocol::MessageHeader header =
-        protocol::decode_header(pending.first<protocol::kHeaderSize>());
-    if (header.size > protocol::kMaxPayloadSize) {
+    if (pending.size() < kHeaderSize) break;
+    const MessageHeader header =
+        decode_header(pending.first<kHeaderSize>());
+    if (header.size > kMaxPayloadSize) {
       if (header.size > kMaxSkippableSize) {
         skipped_ += 2;  // not a header after all: scan on from the next byte pair
         drop(2);
@@ -63,16 +63,16 @@ std::vector<FrameEvent> FrameReader::feed(std::span<const std::uint8_t> bytes) {
       }
       flush_skipped(events);
       events.emplace_back(OversizeMessage{header});
-      drop(protocol::kHeaderSize);
+      drop(kHeaderSize);
       body_to_discard_ = header.size;
       continue;
     }
-    const std::size_t total = protocol::kHeaderSize + header.size;
+    const std::size_t total = kHeaderSize + header.size;
     if (pending.size() < total) break;
     flush_skipped(events);
-    protocol::Message message;
+    Message message;
     message.header = header;
-    message.payload.assign(pending.begin() + protocol::kHeaderSize,
+    message.payload.assign(pending.begin() + kHeaderSize,
                            pending.begin() + static_cast<std::ptrdiff_t>(total));
     events.emplace_back(std::move(message));
     drop(total);
@@ -80,4 +80,4 @@ std::vector<FrameEvent> FrameReader::feed(std::span<const std::uint8_t> bytes) {
   return events;
 }
 
-}  // namespace playerkit::server
+}  // namespace playerkit::protocol

@@ -1,5 +1,6 @@
 #pragma once
-// Splits a client's byte stream into Player messages, and survives garbage.
+// Splits a byte stream into Player messages, and survives garbage. The server
+// reads its clients with it, clients read the server.
 //
 // Bytes go in as they arrive; whole messages come out. A stream that does not
 // start with the "Xx" marker is scanned forward to the next marker (the bytes
@@ -17,17 +18,17 @@
 
 #include "protocol/message.hpp"
 
-namespace playerkit::server {
+namespace playerkit::protocol {
 
 struct SkippedBytes {
   std::size_t count = 0;
 };
 
 struct OversizeMessage {
-  protocol::MessageHeader header;  // its body is discarded
+  MessageHeader header;  // its body is discarded
 };
 
-using FrameEvent = std::variant<protocol::Message, SkippedBytes, OversizeMessage>;
+using FrameEvent = std::variant<Message, SkippedBytes, OversizeMessage>;
 
 class FrameReader {
  public:
@@ -49,4 +50,4 @@ class FrameReader {
   std::size_t skipped_ = 0;          // garbage in the current run
 };
 
-}  // namespace playerkit::server
+}  // namespace playerkit::protocol

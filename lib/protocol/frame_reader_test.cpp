@@ -1,18 +1,18 @@
-#include "server/frame_reader.hpp"
+#include "protocol/frame_reader.hpp"
 
 #include <gtest/gtest.h>
 
 #include "protocol/interfaces.hpp"
 
-namespace playerkit::server {
+namespace playerkit::protocol {
 namespace {
 
-using protocol::MessageType;
+
 
 std::vector<std::uint8_t> request_bytes(std::vector<std::uint8_t> payload,
-                                        std::uint16_t device = protocol::kPlayerCode) {
-  return protocol::encode_message(
-      protocol::make_header(MessageType::kRequest, {device, 0}, {}, {}), payload);
+                                        std::uint16_t device = kPlayerCode) {
+  return encode_message(
+      make_header(MessageType::kRequest, {device, 0}, {}, {}), payload);
 }
 
 std::vector<std::uint8_t> concat(std::initializer_list<std::vector<std::uint8_t>> parts) {
@@ -26,8 +26,8 @@ TEST(FrameReaderTest, SplitsBackToBackMessages) {
   const auto bytes = concat({request_bytes({0, 1}), request_bytes({0, 6, 0, 20})});
   const auto events = reader.feed(bytes);
   ASSERT_EQ(events.size(), 2u);
-  EXPECT_EQ(std::get<protocol::Message>(events[0]).payload, (std::vector<std::uint8_t>{0, 1}));
-  EXPECT_EQ(std::get<protocol::Message>(events[1]).payload, (std::vector<std::uint8_t>{0, 6, 0, 20}));
+  EXPECT_EQ(std::get<Message>(events[0]).payload, (std::vector<std::uint8_t>{0, 1}));
+  EXPECT_EQ(std::get<Message>(events[1]).payload, (std::vector<std::uint8_t>{0, 6, 0, 20}));
   EXPECT_EQ(reader.buffered(), 0u);
 }
 
@@ -40,7 +40,7 @@ TEST(FrameReaderTest, WaitsForTheRestOfAMessageFedOneByteAtATime) {
     events.insert(events.end(), more.begin(), more.end());
   }
   ASSERT_EQ(events.size(), 1u);
-  EXPECT_EQ(std::get<protocol::Message>(events[0]).header.size, 7u);
+  EXPECT_EQ(std::get<Message>(events[0]).header.size, 7u);
 }
 
 TEST(FrameReaderTest, SkipsGarbageToTheNextMarkerAndReportsItOnce) {
@@ -49,7 +49,7 @@ TEST(FrameReaderTest, SkipsGarbageToTheNextMarkerAndReportsItOnce) {
   const auto events = reader.feed(bytes);
   ASSERT_EQ(events.size(), 2u);
   EXPECT_EQ(std::get<SkippedBytes>(events[0]).count, 6u);
-  EXPECT_EQ(std::get<protocol::Message>(events[1]).payload, (std::vector<std::uint8_t>{0, 1}));
+  EXPECT_EQ(std::get<Message>(events[1]).payload, (std::vector<std::uint8_t>{0, 1}));
 }
 
 TEST(FrameReaderTest, KeepsAHalfMarkerAtTheEndOfAChunk) {
@@ -62,32 +62,32 @@ TEST(FrameReaderTest, KeepsAHalfMarkerAtTheEndOfAChunk) {
   events = reader.feed(second);
   ASSERT_EQ(events.size(), 2u);
   EXPECT_EQ(std::get<SkippedBytes>(events[0]).count, 2u);
-  EXPECT_TRUE(std::holds_alternative<protocol::Message>(events[1]));
+  EXPECT_TRUE(std::holds_alternative<Message>(events[1]));
 }
 
 TEST(FrameReaderTest, OversizeMessageIsReportedAndItsBodySkipped) {
   FrameReader reader;
-  std::vector<std::uint8_t> big_payload(protocol::kMaxPayloadSize + 1, 'X');  // markers inside!
-  const auto bytes = concat({request_bytes(big_payload, protocol::kLaserCode), request_bytes({0, 1})});
+  std::vector<std::uint8_t> big_payload(kMaxPayloadSize + 1, 'X');  // markers inside!
+  const auto bytes = concat({request_bytes(big_payload, kLaserCode), request_bytes({0, 1})});
   const auto events = reader.feed(bytes);
   ASSERT_EQ(events.size(), 2u);
   const auto& oversize = std::get<OversizeMessage>(events[0]);
-  EXPECT_EQ(oversize.header.size, protocol::kMaxPayloadSize + 1);
-  EXPECT_EQ(oversize.header.device, protocol::kLaserCode);
-  EXPECT_EQ(std::get<protocol::Message>(events[1]).payload, (std::vector<std::uint8_t>{0, 1}));
+  EXPECT_EQ(oversize.header.size, kMaxPayloadSize + 1);
+  EXPECT_EQ(oversize.header.device, kLaserCode);
+  EXPECT_EQ(std::get<Message>(events[1]).payload, (std::vector<std::uint8_t>{0, 1}));
 }
 
 TEST(FrameReaderTest, AbsurdSizeIsTreatedAsGarbage) {
   FrameReader reader;
-  auto header = protocol::make_header(MessageType::kRequest, {1, 0}, {}, {});
+  auto header = make_header(MessageType::kRequest, {1, 0}, {}, {});
   header.size = 0xFFFFFFF0;
-  const auto header_bytes = protocol::encode_header(header);
+  const auto header_bytes = encode_header(header);
   const auto bytes = concat({{header_bytes.begin(), header_bytes.end()}, request_bytes({0, 1})});
   const auto events = reader.feed(bytes);
   ASSERT_EQ(events.size(), 2u);
-  EXPECT_EQ(std::get<SkippedBytes>(events[0]).count, protocol::kHeaderSize);
-  EXPECT_EQ(std::get<protocol::Message>(events[1]).payload, (std::vector<std::uint8_t>{0, 1}));
+  EXPECT_EQ(std::get<SkippedBytes>(events[0]).count, kHeaderSize);
+  EXPECT_EQ(std::get<Message>(events[1]).payload, (std::vector<std::uint8_t>{0, 1}));
 }
 
 }  // namespace
-}  // namespace playerkit::server
+}  // namespace playerkit::protocol
