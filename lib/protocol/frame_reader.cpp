@@ -55,8 +55,8 @@ std::vector<FrameEvent> FrameReader::feed(std::span<const std::uint8_t> bytes) {
     if (pending.size() < kHeaderSize) break;
     const MessageHeader header =
         decode_header(pending.first<kHeaderSize>());
-    if (header.size > kMaxPayloadSize) {
-      if (header.size > kMaxSkippableSize) {
+    if (header.size > max_payload_) {
+      if (header.size > std::max(kMaxSkippableSize, max_payload_)) {
         skipped_ += 2;  // not a header after all: scan on from the next byte pair
         drop(2);
         continue;

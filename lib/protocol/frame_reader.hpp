@@ -34,6 +34,11 @@ class FrameReader {
  public:
   static constexpr std::size_t kMaxSkippableSize = 1 << 20;
 
+  // Payloads above max_payload are reported as OversizeMessage. The server
+  // keeps 1.5's limit for what clients send; a client reading the server
+  // allows more (camera images are larger).
+  explicit FrameReader(std::size_t max_payload = kMaxPayloadSize) : max_payload_(max_payload) {}
+
   // Appends the bytes and returns every event they complete, in stream order.
   std::vector<FrameEvent> feed(std::span<const std::uint8_t> bytes);
 
@@ -44,6 +49,7 @@ class FrameReader {
   void drop(std::size_t count);
   void flush_skipped(std::vector<FrameEvent>& events);
 
+  std::size_t max_payload_;
   std::vector<std::uint8_t> buffer_;
   std::size_t start_ = 0;            // first unconsumed byte of buffer_
   std::size_t body_to_discard_ = 0;  // rest of an oversize message

@@ -1,0 +1,193 @@
+// lib/client against player-serve's library on loopback.
+
+#include "client/client.hpp"
+
+#include <gtest/gtest.h>
+
+
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/write.hpp>
+
+#include "protocol/binary_codec.hpp"
+#include "protocol/interfaces.hpp"
+#include "protocol/messages/position.hpp"
+#include "test_server.hpp"
+
+namespace playerkit::client {
+namespace {
+
+using protocol::Access;
+using protocol::MessageType;
+using testing::TestServer;
+using Bytes = std::vector<std::uint8_t>;
+
+constexpr const char* kConfig =
+    "position:0 ( driver \"actuator\" )\n"
+    "laser:0 ( driver \"echo\" )\n"
+    "sonar:0 ( driver \"source\" )\n";
+constexpr protocol::DeviceAddress kPosition{protocol::kPositionCode, 0};
+constexpr protocol::DeviceAddress kLaser{protocol::kLaserCode, 0};
+constexpr protocol::DeviceAddress kSonar{protocol::kSonarCode, 0};
+
+TEST(ClientTest, ConnectsAndReadsTheBanner) {
+  TestServer server(kConfig);
+  auto client = Client::connect("127.0.0.1", server.port());
+  EXPECT_EQ(client.server_version(), "1.5");
+  const auto first = client.read(2s);
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->type(), MessageType::kSynch);
+}
+
+TEST(ClientTest, ConnectionRefusedIsAClearError) {
+  std::uint16_t closed_port = 0;
+  {
+    boost::asio::io_context io;
+    boost::asio::ip::tcp::acceptor probe(io, {boost::asio::ip::make_address("127.0.0.1"), 0});
+    closed_port = probe.local_endpoint().port();
+  }
+  try {
+    Client::connect("127.0.0.1", closed_port, 2s);
+    FAIL() << "expected a ClientError";
+  } catch (const ClientError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot connect to 127.0.0.1:" + std::to_string(closed_port)),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(ClientTest, ASilentPeerIsATimeoutAndNotAPlayerServerAnError) {
+  boost::asio::io_context io;
+  const auto loopback = boost::asio::ip::make_address("127.0.0.1");
+  // The kernel completes the handshake for the backlog: connected, but no banner.
+  boost::asio::ip::tcp::acceptor silent(io, {loopback, 0});
+  EXPECT_THROW(Client::connect("127.0.0.1", silent.local_endpoint().port(), 300ms), TimeoutError);
+
+  boost::asio::ip::tcp::acceptor talker(io, {loopback, 0});
+  std::thread answer_with_junk([&] {
+    boost::asio::ip::tcp::socket peer(io);
+    talker.accept(peer);
+    const std::string junk(32, '?');
+    boost::asio::write(peer, boost::asio::buffer(junk));
+  });
+  try {
+    Client::connect("127.0.0.1", talker.local_endpoint().port(), 2s);
+    ADD_FAILURE() << "expected a ClientError";
+  } catch (const TimeoutError&) {
+    ADD_FAILURE() << "expected the banner check, not a timeout";
+  } catch (const ClientError& e) {
+    EXPECT_NE(std::string(e.what()).find("not a Player server"), std::string::npos) << e.what();
+  }
+  answer_with_junk.join();
+}
+
+TEST(ClientTest, DeviceListCarriesDriverNames) {
+  TestServer server(kConfig);
+  auto client = Client::connect("127.0.0.1", server.port());
+  const auto devices = client.device_list();
+  ASSERT_EQ(devices.size(), 3u);
+  EXPECT_EQ(devices[0].address, kPosition);
+  EXPECT_EQ(devices[0].driver_name, "actuator");
+  EXPECT_EQ(devices[1].driver_name, "echo");
+  EXPECT_EQ(devices[2].port, server.port());
+}
+
+TEST(ClientTest, AccessRequestsReturnWhatTheServerGranted) {
+  TestServer server(kConfig);
+  auto client = Client::connect("127.0.0.1", server.port());
+  auto grant = client.request_access(kSonar, Access::kRead);
+  EXPECT_EQ(grant.access, Access::kRead);
+  EXPECT_EQ(grant.driver_name, "source");
+  grant = client.request_access({protocol::kSonarCode, 9}, Access::kRead);
+  EXPECT_EQ(grant.access, Access::kError);
+  EXPECT_EQ(grant.driver_name, "");
+}
+
+TEST(ClientTest, DataWaitingDuringARequestIsNotLost) {
+  TestServer server(kConfig);
+  auto client = Client::connect("127.0.0.1", server.port());
+  client.request_access(kSonar, Access::kRead);
+  client.request_access(kLaser, Access::kRead);
+  client.set_frequency(100);
+  server.device("sonar:0").publish({7, 7}, {3, 0});
+  // Let data rounds pile up unread, then make a request.
+  std::this_thread::sleep_for(100ms);
+  const auto reply = client.request(kLaser, Bytes{1, 42});
+  EXPECT_EQ(reply.type(), MessageType::kAck);
+  EXPECT_EQ(reply.payload, (Bytes{1, 42}));
+  // The rounds that came before the reply are still there, data first.
+  bool got_data = false;
+  for (int i = 0; i < 50 && !got_data; ++i) {
+    const auto message = client.read(100ms);
+    ASSERT_TRUE(message);
+    EXPECT_FALSE(protocol::is_reply(message->type()));
+    if (message->type() == MessageType::kData) {
+      EXPECT_EQ(message->payload, (Bytes{7, 7}));
+      EXPECT_EQ(message->device(), kSonar);
+      got_data = true;
+    }
+  }
+  EXPECT_TRUE(got_data);
+}
+
+TEST(ClientTest, RequestsGetTheirOwnRepliesInOrder) {
+  TestServer server(kConfig);
+  auto client = Client::connect("127.0.0.1", server.port());
+  client.request_access(kLaser, Access::kRead);
+  EXPECT_EQ(client.request(kLaser, Bytes{1, 1}).payload, (Bytes{1, 1}));
+  EXPECT_EQ(client.request(kLaser, Bytes{5}).type(), MessageType::kNack);
+  EXPECT_EQ(client.request(kPosition, Bytes{1}).type(), MessageType::kError);  // not open
+}
+
+TEST(ClientTest, CommandsReachTheDevice) {
+  TestServer server(kConfig);
+  auto client = Client::connect("127.0.0.1", server.port());
+  ASSERT_EQ(client.request_access(kPosition, Access::kAll).access, Access::kAll);
+  protocol::PositionCommand command;
+  command.xspeed = 250;
+  client.write_command(kPosition, protocol::encode(command));
+  core::Device& position = server.device("position:0");
+  ASSERT_TRUE(testing::eventually([&] { return position.latest_command().has_value(); }));
+  EXPECT_EQ(protocol::decode<protocol::PositionCommand>(position.latest_command()->payload).xspeed, 250);
+}
+
+TEST(ClientTest, PullModeDeliversOneRoundPerRequest) {
+  TestServer server(kConfig);
+  auto client = Client::connect("127.0.0.1", server.port());
+  client.request_access(kSonar, Access::kRead);
+  client.set_data_mode(protocol::DataMode::kPullAll);
+  while (client.read(150ms)) {
+  }
+  server.device("sonar:0").publish({4}, {3, 0});
+  client.request_data();
+  std::vector<MessageType> types;
+  while (auto message = client.read(300ms)) types.push_back(message->type());
+  EXPECT_EQ(types, (std::vector<MessageType>{MessageType::kData, MessageType::kSynch}));
+  client.set_data_mode(protocol::DataMode::kPushNew);
+  EXPECT_THROW(client.request_data(), ClientError);
+}
+
+TEST(ClientTest, AuthenticationWithTheRightKeyAndTheWrongOne) {
+  server::ServerOptions options;
+  options.auth_key = "sesame";
+  TestServer server(kConfig, options);
+  auto good = Client::connect("127.0.0.1", server.port());
+  good.authenticate("sesame");
+  EXPECT_EQ(good.request_access(kSonar, Access::kRead).access, Access::kRead);
+  auto bad = Client::connect("127.0.0.1", server.port());
+  EXPECT_THROW(bad.authenticate("open up"), ClientError);
+}
+
+TEST(ClientTest, ServerGoingAwayIsAClientError) {
+  auto server = std::make_unique<TestServer>(kConfig);
+  auto client = Client::connect("127.0.0.1", server->port());
+  server.reset();
+  EXPECT_THROW(
+      {
+        while (client.read(2s)) {
+        }
+      },
+      ClientError);
+}
+
+}  // namespace
+}  // namespace playerkit::client
