@@ -91,3 +91,21 @@ TEST(FrameReaderTest, AbsurdSizeIsTreatedAsGarbage) {
 
 }  // namespace
 }  // namespace playerkit::protocol
+
+namespace playerkit::protocol {
+namespace {
+
+TEST(FrameReaderTest, AReaderMayAllowLargerPayloads) {
+  const std::vector<std::uint8_t> image(100'000, 7);  // a camera frame, say
+  const auto bytes =
+      encode_message(make_header(MessageType::kData, {kCameraCode, 0}, {}, {}), image);
+  FrameReader strict;
+  EXPECT_TRUE(std::holds_alternative<OversizeMessage>(strict.feed(bytes).front()));
+  FrameReader roomy(1 << 20);
+  const auto events = roomy.feed(bytes);
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(std::get<Message>(events[0]).payload, image);
+}
+
+}  // namespace
+}  // namespace playerkit::protocol
