@@ -175,14 +175,17 @@ void Client::authenticate(std::string_view key) {
   protocol::AuthRequest auth;
   auth.subtype = protocol::kPlayerAuthReq;
   auth.auth_key.assign(key.substr(0, protocol::kKeyLength - 1));
+  protocol::Message reply;
   try {
-    const auto reply = player_request(protocol::encode(auth));
-    if (reply.type() != MessageType::kAck) throw ClientError("authentication refused");
+    reply = player_request(protocol::encode(auth));
   } catch (const TimeoutError&) {
     throw;
   } catch (const ClientError&) {
+    // A 1.5 server answers a wrong key by hanging up.
     throw ClientError("authentication refused: the server closed the connection");
   }
+  // A server without -k refuses AUTH with a NACK.
+  if (reply.type() != MessageType::kAck) throw ClientError("authentication refused by the server");
 }
 
 AccessGrant Client::request_access(protocol::DeviceAddress device, protocol::Access access) {

@@ -174,7 +174,24 @@ TEST(ClientTest, AuthenticationWithTheRightKeyAndTheWrongOne) {
   good.authenticate("sesame");
   EXPECT_EQ(good.request_access(kSonar, Access::kRead).access, Access::kRead);
   auto bad = Client::connect("127.0.0.1", server.port());
-  EXPECT_THROW(bad.authenticate("open up"), ClientError);
+  try {
+    bad.authenticate("open up");
+    ADD_FAILURE() << "expected a ClientError";
+  } catch (const ClientError& e) {
+    EXPECT_NE(std::string(e.what()).find("closed the connection"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ClientTest, AuthenticatingWhereNoKeyIsNeededIsRefused) {
+  TestServer server(kConfig);
+  auto client = Client::connect("127.0.0.1", server.port());
+  try {
+    client.authenticate("sesame");
+    ADD_FAILURE() << "expected a ClientError";
+  } catch (const ClientError& e) {
+    EXPECT_NE(std::string(e.what()).find("refused by the server"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(client.request_access(kSonar, Access::kRead).access, Access::kRead);  // still usable
 }
 
 TEST(ClientTest, ServerGoingAwayIsAClientError) {
