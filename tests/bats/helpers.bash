@@ -3,6 +3,8 @@
 repo_root="$(cd "$(dirname "${BATS_TEST_FILENAME}")/../.." && pwd)"
 build_dir="${PLAYERKIT_BUILD_DIR:-$repo_root/build}"
 player_serve="$build_dir/tools/player-serve/player-serve"
+player_cat="$build_dir/tools/player-cat/player-cat"
+player_send="$build_dir/tools/player-send/player-send"
 wire_roundtrip="$build_dir/examples/wire-roundtrip/wire-roundtrip"
 bats_require_minimum_version 1.5.0
 battery_plugin="$build_dir/examples/plugin-driver/libplayerkit_battery_plugin.so"
