@@ -97,6 +97,24 @@ Client Client::connect(const std::string& host, std::uint16_t port,
   return client;
 }
 
+void Client::feed(std::size_t received) {
+  for (auto& event : reader_.feed(std::span<const std::uint8_t>(read_buffer_.data(), received))) {
+    if (auto* message = std::get_if<protocol::Message>(&event)) {
+      bool late_reply = false;
+      if (protocol::is_reply(message->type())) {
+        if (auto owed = abandoned_replies_.find(message->device()); owed != abandoned_replies_.end()) {
+          // The answer to a request that timed out: never a later request's reply.
+          late_reply = true;
+          if (--owed->second == 0) abandoned_replies_.erase(owed);
+        }
+      }
+      incoming_.push_back({std::move(*message), late_reply});
+    } else {
+      throw ClientError("the server sent bytes that are not a Player message");
+    }
+  }
+}
+
 bool Client::receive_more(Clock::time_point deadline) {
   const std::size_t before = incoming_.size();
   while (incoming_.size() == before) {
@@ -109,23 +127,68 @@ bool Client::receive_more(Clock::time_point deadline) {
                                received = n;
                                done = true;
                              });
-    if (!run_until(done, deadline)) return false;
+    // Even on a timeout the read may have completed just before its cancel:
+    // those bytes belong to the stream and are kept.
+    run_until(done, deadline);
+    if (ec == asio::error::operation_aborted) return false;
     if (ec == asio::error::eof) throw ClientError("the server closed the connection");
     if (ec) throw ClientError("connection lost: " + ec.message());
-    for (auto& event : reader_.feed(std::span<const std::uint8_t>(read_buffer_.data(), received))) {
-      if (auto* message = std::get_if<protocol::Message>(&event)) {
-        incoming_.push_back(std::move(*message));
-      } else {
-        throw ClientError("the server sent bytes that are not a Player message");
-      }
-    }
+    feed(received);
+    if (incoming_.size() == before && Clock::now() >= deadline) return false;
   }
   return true;
 }
 
+void Client::receive_available() {
+  boost::system::error_code ec;
+  socket_->non_blocking(true, ec);
+  for (;;) {
+    const std::size_t received = socket_->read_some(asio::buffer(read_buffer_), ec);
+    if (ec == asio::error::would_block || ec == asio::error::try_again) break;
+    if (ec == asio::error::eof) throw ClientError("the server closed the connection");
+    if (ec) throw ClientError("connection lost: " + ec.message());
+    feed(received);
+  }
+  socket_->non_blocking(false, ec);
+}
+
+void Client::async_read(ReadHandler handler) { handlers_.push_back(std::move(handler)); }
+
+std::size_t Client::dispatch_handlers() {
+  std::size_t ran = 0;
+  while (!handlers_.empty() && !incoming_.empty()) {
+    ReadHandler handler = std::move(handlers_.front());
+    handlers_.pop_front();
+    protocol::Message message = std::move(incoming_.front().message);
+    incoming_.pop_front();
+    handler(std::move(message));
+    ++ran;
+  }
+  return ran;
+}
+
+std::size_t Client::poll() {
+  if (!handlers_.empty()) receive_available();
+  return dispatch_handlers();
+}
+
+std::size_t Client::run_for(std::chrono::milliseconds duration) {
+  const auto deadline = Clock::now() + duration;
+  std::size_t ran = dispatch_handlers();
+  while (!handlers_.empty()) {
+    if (!receive_more(deadline)) break;
+    ran += dispatch_handlers();
+  }
+  return ran;
+}
+
+int Client::native_handle() {
+  return socket_ && socket_->is_open() ? static_cast<int>(socket_->native_handle()) : -1;
+}
+
 std::optional<protocol::Message> Client::read(std::chrono::milliseconds timeout) {
   if (incoming_.empty() && !receive_more(Clock::now() + timeout)) return std::nullopt;
-  protocol::Message message = std::move(incoming_.front());
+  protocol::Message message = std::move(incoming_.front().message);
   incoming_.pop_front();
   return message;
 }
@@ -137,7 +200,11 @@ void Client::send(const std::vector<std::uint8_t>& bytes) {
     ec = error;
     done = true;
   });
-  if (!run_until(done, Clock::now() + timeout_)) throw TimeoutError("the server takes no data");
+  if (!run_until(done, Clock::now() + timeout_)) {
+    // Part of the message may have gone out: the stream is no longer in step.
+    close();
+    throw TimeoutError("the server takes no data (connection closed)");
+  }
   if (ec) throw ClientError("connection lost: " + ec.message());
 }
 
@@ -154,14 +221,16 @@ protocol::Message Client::request(protocol::DeviceAddress device, std::span<cons
   std::size_t next = queued_before;
   for (;;) {
     for (; next < incoming_.size(); ++next) {
-      const protocol::Message& message = incoming_[next];
-      if (protocol::is_reply(message.type()) && message.device() == device) {
-        protocol::Message reply = std::move(incoming_[next]);
+      const auto& [message, late_reply] = incoming_[next];
+      // A late reply stays queued for read(): it is not this request's answer.
+      if (protocol::is_reply(message.type()) && message.device() == device && !late_reply) {
+        protocol::Message reply = std::move(incoming_[next].message);
         incoming_.erase(incoming_.begin() + static_cast<std::ptrdiff_t>(next));
         return reply;
       }
     }
     if (!receive_more(deadline)) {
+      ++abandoned_replies_[device];
       throw TimeoutError("no reply from " + protocol::to_string(device) + " within the timeout");
     }
   }

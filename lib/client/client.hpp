@@ -9,10 +9,17 @@
 //
 // Messages that arrive while a request waits for its reply (data, SYNCH, other
 // replies) are kept, in order, for read(): nothing is lost.
+//
+// Asynchronous reading, in the manner of Asio: async_read() registers a handler
+// for the next message; poll() and run_for() run the handlers on the calling
+// thread. native_handle() is the socket, for select()/poll() loops that watch
+// several connections. A Client is used by one thread at a time.
 
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <span>
@@ -86,6 +93,26 @@ class Client {
   // whose device and index are the request's. Throws TimeoutError.
   protocol::Message request(protocol::DeviceAddress device, std::span<const std::uint8_t> payload);
 
+  using ReadHandler = std::function<void(protocol::Message)>;
+  // Registers a handler for the next message not yet taken (handlers queue up in
+  // order; a handler may call async_read again to keep reading). Handlers run
+  // only inside poll() and run_for(), never inside request(), so a request in
+  // progress always gets its own reply. read() takes messages before handlers do.
+  void async_read(ReadHandler handler);
+  // Takes what the socket already holds, without waiting, and runs the handlers
+  // it satisfies. Returns how many ran. Throws ClientError on a lost connection.
+  std::size_t poll();
+  // Runs handlers as messages arrive, until `duration` has passed or no handler
+  // is pending. Returns how many ran.
+  std::size_t run_for(std::chrono::milliseconds duration);
+  [[nodiscard]] std::size_t pending_handlers() const { return handlers_.size(); }
+  // Messages already read from the socket and waiting here: a select()/poll()
+  // loop on native_handle() must take these first, the socket will not show them.
+  [[nodiscard]] std::size_t queued_messages() const { return incoming_.size(); }
+
+  // The socket descriptor: readable when the server has sent something. -1 once closed.
+  int native_handle();
+
   void set_timeout(std::chrono::milliseconds timeout) { timeout_ = timeout; }
   void close();
 
@@ -96,6 +123,10 @@ class Client {
   bool run_until(const bool& done, std::chrono::steady_clock::time_point deadline);
   // Reads from the socket until at least one more message is queued or the deadline.
   bool receive_more(std::chrono::steady_clock::time_point deadline);
+  // Queues whatever the socket holds now, without waiting.
+  void receive_available();
+  void feed(std::size_t received);
+  std::size_t dispatch_handlers();
   void send(const std::vector<std::uint8_t>& bytes);
   protocol::Message player_request(std::vector<std::uint8_t> payload);
 
@@ -104,7 +135,15 @@ class Client {
   std::string server_version_;
   std::chrono::milliseconds timeout_{5s};
   protocol::FrameReader reader_{kMaxReadPayload};
-  std::deque<protocol::Message> incoming_;
+  struct Incoming {
+    protocol::Message message;
+    bool late_reply = false;  // answers a request that timed out
+  };
+  std::deque<Incoming> incoming_;
+  std::deque<ReadHandler> handlers_;
+  // Replies still owed to requests that timed out, per device: the next ones
+  // to arrive must not be taken as the answer to a later request.
+  std::map<protocol::DeviceAddress, std::size_t> abandoned_replies_;
   std::vector<std::uint8_t> read_buffer_;
 
   // Large enough for a full camera image; the server may send more than 1.5's 8160.
