@@ -4,9 +4,12 @@
 //
 //   out << log::log_file_header();
 //   out << log::format_data_line(message, "robot1", 6665);
+//   out << log::format_sync_line(now_seconds, "robot1", 6665);
 //
 // Interfaces without data fields in 1.5 (everything but laser, position,
 // position3d, gps, truth and fiducial) get the common prefix only, as in 1.5.
+// So does a zero-length data message (readlog publishes one before its first
+// line): there is nothing to write, and the reader gives it back as empty.
 
 #include <cstdint>
 #include <string>
@@ -21,11 +24,15 @@ std::string log_file_header();
 
 // One data line for a data message: server time (header time), host, port,
 // interface, index, data time (header timestamp), then the interface's fields.
-// Ends with '\n'. Throws protocol::DecodeError when the payload does not fit.
+// Ends with '\n'. Throws protocol::DecodeError when the payload does not fit its
+// struct, std::invalid_argument for a message that is not data, an interface
+// code Player 1.5 does not name, or a host that is empty or holds whitespace
+// (the format separates fields by spaces).
 std::string format_data_line(const protocol::Message& message, std::string_view host,
                              std::uint16_t port);
 
-// A "sync" line at `time` (seconds).
+// A "sync" line at `time` (seconds): the common prefix with interface "sync",
+// index 00 and the data time equal to `time`. Same host rules as above.
 std::string format_sync_line(double time, std::string_view host, std::uint16_t port);
 
 }  // namespace playerkit::log

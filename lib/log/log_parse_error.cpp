@@ -1,0 +1,15 @@
+#include "log/log_parse_error.hpp"
+
+#include <utility>
+
+namespace playerkit::log {
+
+LogParseError::LogParseError(std::string file, int line, int column, std::string message)
+    : std::runtime_error(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
+                         message),
+      file_(std::move(file)),
+      line_(line),
+      column_(column),
+      message_(std::move(message)) {}
+
+}  // namespace playerkit::log
