@@ -1,0 +1,15 @@
+#include "client/typed/power.hpp"
+
+#include <gtest/gtest.h>
+
+namespace playerkit::client {
+namespace {
+
+TEST(TypedPower, DecivoltsToVolts) {
+  EXPECT_DOUBLE_EQ(to_si(protocol::PowerData{125}).volts, 12.5);
+  EXPECT_DOUBLE_EQ(to_si(protocol::PowerData{131}).volts, 13.1);
+  EXPECT_DOUBLE_EQ(to_si(protocol::PowerData{0}).volts, 0.0);
+}
+
+}  // namespace
+}  // namespace playerkit::client
