@@ -41,6 +41,7 @@ bool Device::writable() const { return info_.access == Access::kWrite || info_.a
 bool Device::subscribe() {
   std::lock_guard lock(subscription_mutex_);
   if (subscriptions_ == 0) {
+    set_available(true);
     try {
       driver_->setup();
     } catch (const std::exception& e) {
@@ -48,6 +49,9 @@ bool Device::subscribe() {
       return false;
     }
     logger_.debug(name() + ": set up");
+  } else if (const auto reason = unavailable_reason()) {
+    logger_.warning(name() + ": subscription refused: " + *reason);
+    return false;
   }
   ++subscriptions_;
   return true;
@@ -83,6 +87,24 @@ void Device::force_shutdown() {
   } catch (const std::exception& e) {
     logger_.error(name() + ": shutdown failed: " + e.what());
   }
+}
+
+void Device::set_available(bool available, std::string reason) {
+  std::lock_guard lock(availability_mutex_);
+  available_ = available;
+  unavailable_reason_ = available ? std::string() : std::move(reason);
+  if (!available_ && unavailable_reason_.empty()) unavailable_reason_ = "the device is unavailable";
+}
+
+bool Device::available() const {
+  std::lock_guard lock(availability_mutex_);
+  return available_;
+}
+
+std::optional<std::string> Device::unavailable_reason() const {
+  std::lock_guard lock(availability_mutex_);
+  if (available_) return std::nullopt;
+  return unavailable_reason_;
 }
 
 void Device::prepare() { driver_->prepare(); }

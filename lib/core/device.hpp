@@ -100,6 +100,12 @@ class Device {
   [[nodiscard]] int subscriptions() const;
   // Shuts the driver down whatever the count (server exit).
   void force_shutdown();
+  // For drivers whose resource can go away while they are set up (a remote
+  // server, an unplugged port): while unavailable, further subscriptions are
+  // refused (the client is granted 'e', as for a failed setup) and the ones
+  // already held are kept. Every setup starts available.
+  void set_available(bool available, std::string reason = {});
+  [[nodiscard]] bool available() const;
   // Once before serving.
   void prepare();
   // One event-loop step for subscribed drivers without a thread of their own:
@@ -142,6 +148,7 @@ class Device {
 
  private:
   std::vector<DeviceListener*> listeners_copy() const;
+  [[nodiscard]] std::optional<std::string> unavailable_reason() const;
 
   const DeviceKey key_;
   const DeviceInfo info_;
@@ -153,6 +160,12 @@ class Device {
 
   mutable std::mutex subscription_mutex_;
   int subscriptions_ = 0;
+
+  // Not under subscription_mutex_: setup() runs holding that one and may call
+  // set_available().
+  mutable std::mutex availability_mutex_;
+  bool available_ = true;
+  std::string unavailable_reason_;
 
   mutable std::mutex mutex_;  // everything below
   std::shared_ptr<const DataSample> data_;

@@ -4,7 +4,9 @@
 
 #include <atomic>
 #include <chrono>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "core/test_drivers.hpp"
 #include "protocol/binary_codec.hpp"
@@ -45,6 +47,43 @@ TEST_F(DeviceFixture, FirstSubscriberSetsUpLastShutsDown) {
   EXPECT_EQ(device->subscriptions(), 0);
   device->unsubscribe();  // one too many: ignored
   EXPECT_EQ(counts.shutdown, 1);
+  EXPECT_TRUE(device->subscribe());
+  EXPECT_EQ(counts.setup, 2);
+}
+
+TEST_F(DeviceFixture, UnavailableDeviceRefusesNewSubscriptionsAndKeepsHeldOnes) {
+  auto device = make();
+  ASSERT_TRUE(device->subscribe());
+  EXPECT_TRUE(device->available());
+  device->set_available(false, "remote localhost:6665 went away");
+  EXPECT_FALSE(device->available());
+  EXPECT_FALSE(device->subscribe());
+  EXPECT_EQ(device->subscriptions(), 1);  // the one held is kept
+  EXPECT_EQ(counts.setup, 1);
+  device->set_available(true);
+  EXPECT_TRUE(device->subscribe());
+  EXPECT_EQ(device->subscriptions(), 2);
+}
+
+TEST_F(DeviceFixture, RefusedSubscriptionIsLoggedWithTheReason) {
+  std::vector<std::string> lines;
+  logger.set_sink([&](LogLevel, std::string_view line) { lines.emplace_back(line); });
+  auto device = make();
+  ASSERT_TRUE(device->subscribe());
+  device->set_available(false, "remote localhost:6665 went away");
+  EXPECT_FALSE(device->subscribe());
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_NE(lines[0].find("position:0@6665"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find("remote localhost:6665 went away"), std::string::npos) << lines[0];
+}
+
+TEST_F(DeviceFixture, EverySetupStartsAvailable) {
+  auto device = make();
+  ASSERT_TRUE(device->subscribe());
+  device->set_available(false);
+  device->unsubscribe();  // shut down while unavailable
+  EXPECT_TRUE(device->subscribe());  // set up afresh: the driver decides again
+  EXPECT_TRUE(device->available());
   EXPECT_TRUE(device->subscribe());
   EXPECT_EQ(counts.setup, 2);
 }

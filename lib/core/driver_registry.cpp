@@ -2,6 +2,11 @@
 
 namespace playerkit::core {
 
+DeviceLimits DriverSpec::limits_for(std::uint16_t interface) const {
+  const auto it = interface_limits.find(interface);
+  return it == interface_limits.end() ? limits : it->second;
+}
+
 void DriverRegistry::add(DriverSpec spec) {
   std::string name = spec.name;
   drivers_.insert_or_assign(std::move(name), std::move(spec));

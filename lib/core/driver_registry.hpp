@@ -41,6 +41,12 @@ struct DriverSpec {
   DriverFactory factory;
   DeviceLimits limits;
   std::string summary;  // one line for `drivers list`
+  // Drivers of several interfaces whose devices need other queues on some of
+  // them (passthrough: comms messages queue, laser scans do not).
+  std::map<std::uint16_t, DeviceLimits> interface_limits{};
+
+  // `limits`, unless interface_limits says otherwise for this interface.
+  [[nodiscard]] DeviceLimits limits_for(std::uint16_t interface) const;
 };
 
 class DriverRegistry {

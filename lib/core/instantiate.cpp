@@ -62,7 +62,8 @@ void instantiate_devices(const config::ConfigFile& config, const DriverRegistry&
       throw config::ConfigError(declaration.where,
                                 "driver '" + spec->name + "' could not be created");
     }
-    DeviceInfo info{spec->name, declaration.robot_name, spec->access, spec->limits,
+    DeviceInfo info{spec->name, declaration.robot_name, spec->access,
+                    spec->limits_for(key.address.interface),
                     declaration.alwayson};
     devices.add(std::make_unique<Device>(key, std::move(info), std::move(driver), clock, logger));
   }

@@ -98,6 +98,27 @@ TEST_F(InstantiateFixture, FactoryFailureBecomesAConfigErrorAtTheSection) {
   }
 }
 
+TEST_F(InstantiateFixture, InterfaceLimitsOverrideTheDriversLimitsForThatInterfaceOnly) {
+  DriverSpec spec{"counting", {protocol::kLaserCode, protocol::kSonarCode}, Access::kRead,
+                  [this](const DriverContext&) -> std::unique_ptr<Driver> {
+                    return std::make_unique<testing::CountingDriver>(counts);
+                  },
+                  DeviceLimits{3}, ""};
+  spec.interface_limits[protocol::kSonarCode] = DeviceLimits{5, 16, 4};
+  registry.add(std::move(spec));
+  instantiate_devices(load("laser ( driver \"counting\" )\nsonar ( driver \"counting\" )\n"),
+                      registry, table, clock, logger);
+  const Device* laser = table.find(7000, {protocol::kLaserCode, 0});
+  const Device* sonar = table.find(7000, {protocol::kSonarCode, 0});
+  ASSERT_NE(laser, nullptr);
+  ASSERT_NE(sonar, nullptr);
+  EXPECT_EQ(laser->info().limits.request_queue, 3u);
+  EXPECT_FALSE(laser->queues_data());
+  EXPECT_EQ(sonar->info().limits.request_queue, 5u);
+  EXPECT_EQ(sonar->info().limits.data_queue, 16u);
+  EXPECT_EQ(sonar->info().limits.command_queue, 4u);
+}
+
 TEST(DriverRegistryTest, LaterRegistrationReplacesAndListingIsSorted) {
   DriverRegistry registry;
   registry.add({"zeta", {}, Access::kRead, nullptr, {}, "first"});

@@ -3,6 +3,7 @@
 #include "drivers/comms/udpbroadcast_driver.hpp"
 #include "drivers/mcom/lifomcom_driver.hpp"
 #include "drivers/null/null_driver.hpp"
+#include "drivers/passthrough/passthrough_driver.hpp"
 
 namespace playerkit::drivers {
 
@@ -10,6 +11,7 @@ void register_builtin_drivers(core::DriverRegistry& registry) {
   registry.add(null_driver_spec());
   registry.add(lifomcom_driver_spec());
   registry.add(udpbroadcast_driver_spec());
+  registry.add(passthrough_driver_spec());
 }
 
 }  // namespace playerkit::drivers

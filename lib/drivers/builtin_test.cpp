@@ -13,7 +13,7 @@ namespace {
 
 using protocol::Access;
 
-TEST(BuiltinDrivers, RegistersTheThreeDriversSortedByName) {
+TEST(BuiltinDrivers, RegistersEveryDriverSortedByName) {
   core::DriverRegistry registry;
   register_builtin_drivers(registry);
   std::vector<std::string> names;
@@ -24,7 +24,7 @@ TEST(BuiltinDrivers, RegistersTheThreeDriversSortedByName) {
     EXPECT_TRUE(static_cast<bool>(spec->factory)) << spec->name;
     EXPECT_GE(spec->limits.request_queue, 1u) << spec->name;
   }
-  EXPECT_EQ(names, (std::vector<std::string>{"lifomcom", "null", "udpbroadcast"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"lifomcom", "null", "passthrough", "udpbroadcast"}));
 }
 
 TEST(BuiltinDrivers, InterfacesAndAccessAsIn15) {

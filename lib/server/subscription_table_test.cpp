@@ -69,6 +69,19 @@ TEST_F(SubscriptionFixture, MissingDeviceOrRefusedSetupGivesE) {
   EXPECT_EQ(device->subscriptions(), 0);
 }
 
+// A set-up device whose driver lost its resource (passthrough's remote server).
+TEST_F(SubscriptionFixture, UnavailableDeviceGivesENewcomersAndKeepsHolders) {
+  EXPECT_EQ(ask('r'), Access::kRead);
+  device->set_available(false, "remote gone");
+  SubscriptionTable newcomer;
+  EXPECT_EQ(newcomer.request(address, 'r', device.get()), Access::kError);
+  EXPECT_EQ(table.access(address), Access::kRead);
+  EXPECT_EQ(device->subscriptions(), 1);
+  device->set_available(true);
+  EXPECT_EQ(newcomer.request(address, 'r', device.get()), Access::kRead);
+  EXPECT_EQ(device->subscriptions(), 2);
+}
+
 TEST_F(SubscriptionFixture, EntriesKeepFirstRequestOrder) {
   table.request({protocol::kLaserCode, 0}, 'r', nullptr);
   ask('r');
