@@ -54,7 +54,11 @@ void UdpBroadcastDriver::open() {
   }
 }
 
-void UdpBroadcastDriver::close() { socket_.reset(); }
+void UdpBroadcastDriver::close() {
+  // A client may write and hang up at once: what it wrote still goes out.
+  if (socket_) send_waiting_commands();
+  socket_.reset();
+}
 
 void UdpBroadcastDriver::run(std::stop_token stop) {
   while (!stop.stop_requested()) {

@@ -120,6 +120,18 @@ TEST_F(UdpBroadcastTest, CommandsGoOutAsOneDatagramEach) {
   EXPECT_EQ(peer.receive(5s), std::optional<std::string>(binary));
 }
 
+TEST_F(UdpBroadcastTest, CommandsWrittenJustBeforeTheLastClientLeavesStillGoOut) {
+  builtin.load(comms_section(0, port));
+  core::Device& device = builtin.device(kCommsCode);
+  const testing::LoopbackPeer peer(port);
+  ASSERT_TRUE(device.subscribe());
+  ASSERT_TRUE(send_command(device, "one"));
+  ASSERT_TRUE(send_command(device, "two"));
+  device.unsubscribe();  // shuts the driver down, maybe before its thread looked
+  EXPECT_EQ(peer.receive(5s), std::optional<std::string>("one"));
+  EXPECT_EQ(peer.receive(5s), std::optional<std::string>("two"));
+}
+
 TEST_F(UdpBroadcastTest, EveryDatagramHeardIsPublished) {
   builtin.load(comms_section(0, port));
   core::Device& device = builtin.device(kCommsCode);
