@@ -1,0 +1,32 @@
+#pragma once
+// Opens a log for reading, gzip-compressed or plain (told by its first bytes,
+// not its name), as a std::istream read in 64 KiB blocks: constant memory
+// whatever the file's size.
+//
+//   auto in = log::open_log_input("intel.log.gz");
+//   log::TextLogReader reader(*in, "intel.log.gz");
+//   ...
+//   if (const auto error = in->error()) ...   // truncated or corrupt gzip data
+
+#include <filesystem>
+#include <istream>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace playerkit::log {
+
+class LogInput : public std::istream {
+ public:
+  // The decompression error that ended the stream early, if any (a truncated
+  // .gz file reads up to the damage, then ends with this set).
+  [[nodiscard]] virtual std::optional<std::string> error() const = 0;
+
+ protected:
+  using std::istream::istream;
+};
+
+// Throws std::runtime_error "cannot open FILE: reason".
+std::unique_ptr<LogInput> open_log_input(const std::filesystem::path& path);
+
+}  // namespace playerkit::log
