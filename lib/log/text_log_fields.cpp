@@ -101,14 +101,19 @@ protocol::Timestamp LineFields::timestamp(std::size_t i, std::string_view what) 
   return {static_cast<std::uint32_t>(sec), static_cast<std::uint32_t>(usec)};
 }
 
-double LineFields::real(std::size_t i, std::string_view what) const {
+double LineFields::real(std::size_t i, std::string_view what) const { return number(i, what, false); }
+
+double LineFields::scientific(std::size_t i, std::string_view what) const { return number(i, what, true); }
+
+double LineFields::number(std::size_t i, std::string_view what, bool allow_exponent) const {
   at(i, what);
   std::string_view text = fields_[i].text;
   std::string_view digits = text;
   if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-') digits.remove_prefix(1);
   double value = 0;
   const auto parsed =
-      std::from_chars(digits.data(), digits.data() + digits.size(), value, std::chars_format::fixed);
+      std::from_chars(digits.data(), digits.data() + digits.size(), value,
+                      allow_exponent ? std::chars_format::general : std::chars_format::fixed);
   if (parsed.ec != std::errc{} || parsed.ptr != digits.data() + digits.size() || !std::isfinite(value)) {
     fail(i, std::string(what) + ": expected a number, got " + quoted(text));
   }

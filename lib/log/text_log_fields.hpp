@@ -38,6 +38,9 @@ class LineFields {
   protocol::Timestamp timestamp(std::size_t i, std::string_view what) const;
   // A finite decimal number; a leading '+' is allowed (the "%+07.3f" fields).
   double real(std::size_t i, std::string_view what) const;
+  // Like real, but exponents are allowed too ("2.35e-11"): for values that
+  // span many magnitudes, such as covariances.
+  double scientific(std::size_t i, std::string_view what) const;
 
   // A whole number that fits Int.
   template <std::integral Int>
@@ -62,6 +65,7 @@ class LineFields {
     int column = 0;  // 1-based
   };
 
+  double number(std::size_t i, std::string_view what, bool allow_exponent) const;
   long long integer_in(std::size_t i, std::string_view what, long long min, long long max) const;
   double rounded_in(std::size_t i, std::string_view what, double wire_per_file_unit,
                     std::string_view wire_unit, double min, double max) const;

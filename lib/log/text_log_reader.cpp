@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "log/text_log_extensions.hpp"
 #include "log/text_log_fields.hpp"
 #include "protocol/binary_codec.hpp"
 #include "protocol/interfaces.hpp"
@@ -114,7 +115,7 @@ std::vector<std::uint8_t> position3d_payload(const LineFields& fields) {
   return protocol::encode(pose);
 }
 
-std::vector<std::uint8_t> gps_payload(const LineFields& fields) {
+std::vector<std::uint8_t> gps_payload(const LineFields& fields, LogFormatVersion version) {
   protocol::GpsData fix;
   fix.time_sec = fields.wire<std::uint32_t>(6, "time", kGpsTimePerWrittenTime, "s");
   fix.latitude = fields.wire<std::int32_t>(7, "latitude", kGpsUnitsPerDeg, "1/216000 deg");
@@ -123,40 +124,83 @@ std::vector<std::uint8_t> gps_payload(const LineFields& fields) {
   fix.utm_e = fields.wire<std::int32_t>(10, "utm_e", kCmPerM, "cm");
   fix.utm_n = fields.wire<std::int32_t>(11, "utm_n", kCmPerM, "cm");
   fix.hdop = fields.wire<std::uint16_t>(12, "hdop", kHdopWirePerHdop, "hdop/10");
-  fix.err_horz = fields.wire<std::uint32_t>(13, "err_horz", kMmPerM, "mm");
-  fix.err_vert = fields.wire<std::uint32_t>(14, "err_vert", kMmPerM, "mm");
-  fix.quality = fields.integer<std::uint8_t>(15, "quality");
-  fix.num_sats = fields.integer<std::uint8_t>(16, "num_sats");
-  fields.expect_end(17, "num_sats");
+  // 0.2.0 has vdop after hdop; 1.5's gps has no field for it.
+  std::size_t next = 13;
+  if (version == LogFormatVersion::k0_2_0) fields.real(next++, "vdop");
+  fix.err_horz = fields.wire<std::uint32_t>(next, "err_horz", kMmPerM, "mm");
+  fix.err_vert = fields.wire<std::uint32_t>(next + 1, "err_vert", kMmPerM, "mm");
+  fix.quality = fields.integer<std::uint8_t>(next + 2, "quality");
+  fix.num_sats = fields.integer<std::uint8_t>(next + 3, "num_sats");
+  fields.expect_end(next + 4, "num_sats");
   return protocol::encode(fix);
 }
 
-std::vector<std::uint8_t> truth_payload(const LineFields& fields) {
+std::vector<std::uint8_t> truth_payload(const LineFields& fields, LogFormatVersion version) {
   protocol::TruthData pose;
   pose.px = fields.wire<std::int32_t>(6, "x", kMmPerM, "mm");
   pose.py = fields.wire<std::int32_t>(7, "y", kMmPerM, "mm");
+  if (version == LogFormatVersion::k0_2_0) {
+    // x y z roll pitch yaw: 1.5's planar truth has no z, roll or pitch.
+    fields.real(8, "z");
+    fields.real(9, "roll");
+    fields.real(10, "pitch");
+    pose.pa = fields.wire<std::int32_t>(11, "yaw", kDegPerRad, "deg");
+    fields.expect_end(12, "yaw");
+    return protocol::encode(pose);
+  }
   pose.pa = fields.wire<std::int32_t>(8, "heading", kDegPerRad, "deg");
   fields.expect_end(9, "heading");
   return protocol::encode(pose);
 }
 
-std::vector<std::uint8_t> fiducial_payload(const LineFields& fields) {
+// 0.2.0: id x y z roll pitch yaw, then six uncertainties, per fiducial (the
+// writer's mapping from 1.5's range/bearing, undone).
+void read_fiducial_3d(const LineFields& fields, std::size_t first, protocol::FiducialItem& item) {
+  item.id = fields.integer<std::int16_t>(first, "id");
+  const double x = fields.real(first + 1, "x");
+  const double y = fields.real(first + 2, "y");
+  fields.real(first + 3, "z");
+  fields.real(first + 4, "roll");
+  fields.real(first + 5, "pitch");
+  const double range_mm = std::round(std::hypot(x, y) * kMmPerM);
+  if (range_mm > std::numeric_limits<std::int16_t>::max()) {
+    fields.fail(first + 1, "fiducial at " + fields.text(first + 1) + ", " + fields.text(first + 2) +
+                               " m is beyond the 32.767 m a 1.5 fiducial range holds");
+  }
+  item.pose[0] = static_cast<std::int16_t>(range_mm);
+  item.pose[1] = static_cast<std::int16_t>(std::round(std::atan2(y, x) * kDegPerRad));
+  item.pose[2] = fields.wire<std::int16_t>(first + 6, "yaw", kDegPerRad, "deg");
+  item.upose[0] = fields.wire<std::int16_t>(first + 7, "x uncertainty", kMmPerM, "mm");
+  item.upose[1] = fields.wire<std::int16_t>(first + 8, "y uncertainty", kDegPerRad, "deg");
+  fields.real(first + 9, "z uncertainty");
+  fields.real(first + 10, "roll uncertainty");
+  fields.real(first + 11, "pitch uncertainty");
+  item.upose[2] = fields.wire<std::int16_t>(first + 12, "yaw uncertainty", kDegPerRad, "deg");
+}
+
+std::vector<std::uint8_t> fiducial_payload(const LineFields& fields, LogFormatVersion version) {
   protocol::FiducialData seen;
+  const std::size_t group = version == LogFormatVersion::k0_2_0 ? 13 : 4;
   const auto count = fields.integer<std::uint16_t>(6, "count");
   if (count > protocol::kFiducialMaxSamples) {
     fields.fail(6, "count " + std::to_string(count) + " exceeds the " +
                        std::to_string(protocol::kFiducialMaxSamples) + " fiducials a scan holds");
   }
   seen.count = count;
-  const std::size_t end = 7 + 4 * std::size_t{count};
+  const std::size_t end = 7 + group * std::size_t{count};
   if (fields.size() < end) {
-    fields.fail_at_end("fiducial line ends after " + std::to_string((fields.size() - 7) / 4) +
+    fields.fail_at_end("fiducial line ends after " + std::to_string((fields.size() - 7) / group) +
                        " of its " + std::to_string(count) +
-                       " fiducials (each is id, range, bearing, orientation)");
+                       (group == 4 ? " fiducials (each is id, range, bearing, orientation)"
+                                   : " fiducials (each is id, x y z roll pitch yaw, 6 uncertainties)"));
   }
   fields.expect_end(end, "the last of the " + std::to_string(count) + " fiducials of count");
   for (std::size_t i = 0; i < count; ++i) {
-    const std::size_t first = 7 + 4 * i;
+    const std::size_t first = 7 + group * i;
+    if (group == 13) {
+      read_fiducial_3d(fields, first, seen.fiducials[i]);
+      continue;
+    }
     auto& item = seen.fiducials[i];
     item.id = fields.integer<std::int16_t>(first, "id");
     item.pose[0] = fields.wire<std::int16_t>(first + 1, "range", kMmPerM, "mm");
@@ -167,18 +211,18 @@ std::vector<std::uint8_t> fiducial_payload(const LineFields& fields) {
 }
 
 std::vector<std::uint8_t> payload_of(std::uint16_t interface, std::string_view name,
-                                     const LineFields& fields) {
+                                     const LineFields& fields, LogFormatVersion version) {
   using namespace protocol;
   switch (interface) {
-    case kLaserCode: return laser_payload(fields);
+    case kLaserCode: return laser_payload(fields);  // 0.2.0 only adds decimals to the resolution
     case kPositionCode: return position_payload(fields);
     case kPosition3dCode: return position3d_payload(fields);
-    case kGpsCode: return gps_payload(fields);
-    case kTruthCode: return truth_payload(fields);
-    case kFiducialCode: return fiducial_payload(fields);
+    case kGpsCode: return gps_payload(fields, version);
+    case kTruthCode: return truth_payload(fields, version);
+    case kFiducialCode: return fiducial_payload(fields, version);
     default:
-      fields.fail(kPrefixFields, std::string(name) +
-                                     " lines carry no data fields in Player 1.5's format (0.0.0)");
+      if (is_extension_interface(interface)) return extension_payload(interface, fields);
+      fields.fail(kPrefixFields, std::string(name) + " lines carry no data fields in a text log");
   }
 }
 
@@ -205,7 +249,7 @@ SyncLine sync_line(const LineFields& fields) {
   return sync;
 }
 
-DataLine data_line(const LineFields& fields) {
+DataLine data_line(const LineFields& fields, LogFormatVersion version) {
   DataLine data;
   data.server_time = fields.timestamp(0, "server time");
   data.host = fields.text(1);
@@ -224,7 +268,7 @@ DataLine data_line(const LineFields& fields) {
                                               data.server_time, data.data_time);
   // Fields of a name we do not know cannot be read; the caller decides what to say.
   if (interface != nullptr && fields.size() > kPrefixFields) {
-    data.message.payload = payload_of(interface->code, interface->name, fields);
+    data.message.payload = payload_of(interface->code, interface->name, fields, version);
   }
   data.message.header.size = static_cast<std::uint32_t>(data.message.payload.size());
   return data;
@@ -233,6 +277,11 @@ DataLine data_line(const LineFields& fields) {
 }  // namespace
 
 LogLine parse_log_line(std::string_view text, std::string_view file, int line_number) {
+  return parse_log_line(text, file, line_number, LogFormatVersion::k0_0_0);
+}
+
+LogLine parse_log_line(std::string_view text, std::string_view file, int line_number,
+                       LogFormatVersion version) {
   const LineFields fields(text, file, line_number);
   if (fields.size() == 0) return SkippedLine{};
   const std::string_view first = fields.text_view(0);
@@ -241,16 +290,25 @@ LogLine parse_log_line(std::string_view text, std::string_view file, int line_nu
   // Every data and sync line starts with the six prefix fields.
   fields.at(kPrefixFields - 1, "the data time (a line starts: time host port interface index time)");
   if (fields.text_view(3) == "sync") return sync_line(fields);
-  return data_line(fields);
+  return data_line(fields, version);
 }
 
-TextLogReader::TextLogReader(std::istream& in, std::string file) : in_(in), file_(std::move(file)) {}
+TextLogReader::TextLogReader(std::istream& in, std::string file, TextLogReaderOptions options)
+    : in_(in), file_(std::move(file)), options_(options) {}
 
 std::optional<std::variant<SyncLine, DataLine>> TextLogReader::next() {
   std::string text;
   while (std::getline(in_, text)) {
     ++line_number_;
-    auto line = parse_log_line(text, file_, line_number_);
+    LogLine line;
+    try {
+      line = parse_log_line(text, file_, line_number_, format_version_);
+    } catch (const LogParseError& error) {
+      if (options_.strict) throw;
+      ++malformed_count_;
+      if (malformed_lines_.size() < options_.kept_errors) malformed_lines_.emplace_back(error.what());
+      continue;
+    }
     if (auto* sync = std::get_if<SyncLine>(&line)) return std::move(*sync);
     if (auto* data = std::get_if<DataLine>(&line)) return std::move(*data);
     if (auto* header = std::get_if<HeaderLine>(&line)) take_header(*header);
@@ -262,11 +320,14 @@ void TextLogReader::take_header(const HeaderLine& header) {
   if (header.name == "Player version") {
     player_version_ = header.value;
   } else if (header.name == "File version") {
-    if (header.value != "0.0.0") {
+    // Not skipped even when lenient: every line after it would be misread.
+    const auto version = parse_format_version(header.value);
+    if (!version) {
       throw LogParseError(file_, line_number_, header.value_column,
                           "file version " + header.value +
-                              " is not read here: this reader reads Player 1.5 logs (0.0.0)");
+                              " is not read here: this reader reads 0.0.0 (Player 1.5) and 0.2.0 (1.6.5)");
     }
+    format_version_ = *version;
     file_version_ = header.value;
   }
 }

@@ -21,8 +21,16 @@
 //     time_sec * (1 + 1e-6) (1.5's quirk), which is undone here (1.5's readlog
 //     kept the integer part, so its times came back off by time_sec * 1e-6 s);
 //   * fiducial: the uncertainties are not written (come back 0);
+//   * the extension interfaces (wifi, sonar, ir, power, bumper, localize, ptz,
+//     blobfinder; lib/log/README.md) come back as written;
 //   * every other interface: no fields at all (empty payload).
-// Only format 0.0.0 (Player 1.5) is read; 1.6's 0.2.0 differs in several fields.
+// Times with 3 or 6 (or any number of) decimals are read; 6 keep microseconds.
+// Files of version 0.0.0 (Player 1.5) and 0.2.0 (1.6.5, spec §6) are read; a
+// file without a version line is read as 0.0.0.
+//
+// By default a malformed line is skipped and counted (its "file:line:col:
+// message" kept for the first few); TextLogReaderOptions{.strict = true}
+// makes it throw instead.
 
 #include <cstdint>
 #include <istream>
@@ -30,8 +38,10 @@
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 #include "log/log_parse_error.hpp"
+#include "log/text_log_format.hpp"
 #include "protocol/device_address.hpp"
 #include "protocol/message.hpp"
 
@@ -77,15 +87,35 @@ using LogLine = std::variant<SkippedLine, HeaderLine, SyncLine, DataLine>;
 // `line_number` only go into errors. Throws LogParseError naming the column of
 // the offending field.
 LogLine parse_log_line(std::string_view text, std::string_view file, int line_number);
+// The same for a file of the given version (the form above reads 0.0.0).
+LogLine parse_log_line(std::string_view text, std::string_view file, int line_number,
+                       LogFormatVersion version);
 
-// A whole log, line by line. Checks the file version when the header gives one.
+struct TextLogReaderOptions {
+  // true: a malformed line throws LogParseError. false: it is skipped and counted.
+  bool strict = false;
+  // How many skipped lines keep their error text (the count goes on past it).
+  std::size_t kept_errors = 10;
+};
+
+// A whole log, line by line, in constant memory. The header's file version
+// chooses how lines are read; an unknown version throws LogParseError (strict
+// or not: every line after it would be misread).
 class TextLogReader {
  public:
-  TextLogReader(std::istream& in, std::string file);
+  TextLogReader(std::istream& in, std::string file, TextLogReaderOptions options = {});
 
-  // The next sync or data line, past blank, comment and header lines; nullopt at
-  // the end. Throws LogParseError (and keeps its place: the next call reads on).
+  // The next sync or data line, past blank, comment and header lines (and,
+  // unless strict, malformed lines); nullopt at the end. When strict, throws
+  // LogParseError and keeps its place: the next call reads on.
   std::optional<std::variant<SyncLine, DataLine>> next();
+
+  // Lines skipped as malformed so far (always 0 when strict).
+  std::size_t malformed_count() const { return malformed_count_; }
+  // "file:line:col: message" of the first kept_errors of them.
+  const std::vector<std::string>& malformed_lines() const { return malformed_lines_; }
+  // From the header's file version line; 0.0.0 until one is read.
+  LogFormatVersion format_version() const { return format_version_; }
 
   // From the header lines, once read; nullopt when the file has none.
   const std::optional<std::string>& player_version() const { return player_version_; }
@@ -98,7 +128,11 @@ class TextLogReader {
 
   std::istream& in_;
   std::string file_;
+  TextLogReaderOptions options_;
   int line_number_ = 0;
+  LogFormatVersion format_version_ = LogFormatVersion::k0_0_0;
+  std::size_t malformed_count_ = 0;
+  std::vector<std::string> malformed_lines_;
   std::optional<std::string> player_version_;
   std::optional<std::string> file_version_;
 };

@@ -265,9 +265,9 @@ TEST(TextLogReader, MalformedFieldsOfOtherInterfaces) {
   EXPECT_EQ(error_of(at + "truth 00 1.000 +0.000 nan +0.000").column(), 36);
   EXPECT_EQ(error_of(at + "fiducial 00 1.000 2 7 +01.500 +00.524 -1.571").column(), 58);
   EXPECT_EQ(error_of(at + "fiducial 00 1.000 33").column(), 32);
-  const auto sonar = error_of(at + "sonar 00 1.000 1.000 2.000");
-  EXPECT_EQ(sonar.column(), 29);
-  EXPECT_EQ(sonar.message(), "sonar lines carry no data fields in Player 1.5's format (0.0.0)");
+  const auto audio = error_of(at + "audio 00 1.000 1.000 2.000");
+  EXPECT_EQ(audio.column(), 29);
+  EXPECT_EQ(audio.message(), "audio lines carry no data fields in a text log");
 }
 
 TEST(TextLogReader, ReadsAWholeFileLineByLine) {
@@ -298,7 +298,7 @@ TEST(TextLogReader, AnErrorGivesTheLineAndTheReaderGoesOn) {
                         "1.000 h 6665 sync 00 1.000 \n"
                         "1.100 h 6665 truth 00 1.000 +0.000\n"
                         "1.200 h 6665 sync 00 1.200 \n");
-  TextLogReader reader(in, "run.log");
+  TextLogReader reader(in, "run.log", {.strict = true});
   EXPECT_TRUE(reader.next().has_value());
   try {
     reader.next();
@@ -312,7 +312,7 @@ TEST(TextLogReader, AnErrorGivesTheLineAndTheReaderGoesOn) {
 }
 
 TEST(TextLogReader, RejectsOtherFileVersions) {
-  std::istringstream in("## Player version 2.0.4 \n## File version 0.2.0 \n");
+  std::istringstream in("## Player version 2.0.4 \n## File version 0.3.0 \n");
   TextLogReader reader(in, "new.log");
   try {
     reader.next();
@@ -320,7 +320,7 @@ TEST(TextLogReader, RejectsOtherFileVersions) {
   } catch (const LogParseError& error) {
     EXPECT_EQ(error.line(), 2);
     EXPECT_EQ(error.column(), 17);
-    EXPECT_NE(error.message().find("file version 0.2.0"), std::string::npos) << error.message();
+    EXPECT_NE(error.message().find("file version 0.3.0"), std::string::npos) << error.message();
   }
 }
 

@@ -82,10 +82,21 @@ TEST(TextLogRoundTrip, SyncLinesReadBackToTheSameLine) {
   EXPECT_EQ(format_sync_line(parsed.server_time.seconds(), parsed.host, parsed.port), line);
 }
 
-TEST(TextLogRoundTrip, TimesKeepTheirMilliseconds) {
+TEST(TextLogRoundTrip, SixDecimalTimesKeepEveryMicrosecond) {
+  const auto message =
+      data_message(kSonarCode, 0, std::vector<std::uint8_t>{}, {4294967295u, 999999}, {5, 1});
+  const auto line = format_data_line(message, "h", 6665);
+  EXPECT_EQ(line, "4294967295.999999 h 6665 sonar 00 0000000005.000001 \n");
+  const auto back = read_back(line).message;
+  EXPECT_EQ(back.time(), (Timestamp{4294967295u, 999999}));
+  EXPECT_EQ(back.timestamp(), (Timestamp{5, 1}));
+}
+
+TEST(TextLogRoundTrip, ThreeDecimalTimesKeepTheirMilliseconds) {
   const auto message =
       data_message(kSonarCode, 0, std::vector<std::uint8_t>{}, {1086000000, 123456}, {5, 999600});
-  const auto back = read_back(format_data_line(message, "h", 6665)).message;
+  const auto back =
+      read_back(format_data_line(message, "h", 6665, {.time_decimals = 3})).message;
   EXPECT_EQ(back.time(), (Timestamp{1086000000, 123000}));
   EXPECT_EQ(back.timestamp(), (Timestamp{6, 0}));
 }

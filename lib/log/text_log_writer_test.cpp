@@ -24,6 +24,9 @@ namespace {
 using namespace protocol;
 using test::data_message;
 
+// These golden lines are byte-exact Player 1.5 output: 3-decimal times.
+constexpr TextLogWriterOptions kPlayer15{.version = LogFormatVersion::k0_0_0, .time_decimals = 3};
+
 // "%014.3f %s %d %s %02d %014.3f " with the test messages' two times.
 std::string prefix(std::string_view interface, std::string_view index) {
   return std::string("1086000000.250 robot1 6665 ").append(interface).append(" ").append(index).append(
@@ -35,31 +38,31 @@ TEST(TextLogWriter, HeaderIsTwoLinesWithTrailingSpaces) {
 }
 
 TEST(TextLogWriter, SyncLineIsThePrefixWithTheSameTimeTwice) {
-  EXPECT_EQ(format_sync_line(1086000000.25, "robot1", 6665),
+  EXPECT_EQ(format_sync_line(1086000000.25, "robot1", 6665, kPlayer15),
             "1086000000.250 robot1 6665 sync 00 1086000000.250 \n");
 }
 
 TEST(TextLogWriter, TimesAreZeroPaddedToFourteenCharacters) {
-  EXPECT_EQ(format_sync_line(12.5, "h", 7000), "0000000012.500 h 7000 sync 00 0000000012.500 \n");
-  EXPECT_EQ(format_sync_line(0.0, "h", 7000), "0000000000.000 h 7000 sync 00 0000000000.000 \n");
+  EXPECT_EQ(format_sync_line(12.5, "h", 7000, kPlayer15), "0000000012.500 h 7000 sync 00 0000000012.500 \n");
+  EXPECT_EQ(format_sync_line(0.0, "h", 7000, kPlayer15), "0000000000.000 h 7000 sync 00 0000000000.000 \n");
 }
 
 TEST(TextLogWriter, TokenZeroIsTheHeaderTimeAndTokenFiveTheTimestamp) {
   auto message = data_message(kSonarCode, 0, std::vector<std::uint8_t>{}, {1086000001, 500000},
                               {1086000000, 1000});
-  EXPECT_EQ(format_data_line(message, "robot1", 6665),
+  EXPECT_EQ(format_data_line(message, "robot1", 6665, kPlayer15),
             "1086000001.500 robot1 6665 sonar 00 1086000000.001 \n");
 }
 
 TEST(TextLogWriter, TimesRoundToMillisecondsAndCarryIntoTheSeconds) {
   auto message = data_message(kSonarCode, 0, std::vector<std::uint8_t>{}, {5, 999600}, {7, 123456});
-  EXPECT_EQ(format_data_line(message, "h", 6665), "0000000006.000 h 6665 sonar 00 0000000007.123 \n");
+  EXPECT_EQ(format_data_line(message, "h", 6665, kPlayer15), "0000000006.000 h 6665 sonar 00 0000000007.123 \n");
 }
 
 TEST(TextLogWriter, IndexHasAtLeastTwoDigits) {
-  EXPECT_EQ(format_data_line(data_message(kSonarCode, 7, std::vector<std::uint8_t>{}), "robot1", 6665),
+  EXPECT_EQ(format_data_line(data_message(kSonarCode, 7, std::vector<std::uint8_t>{}), "robot1", 6665, kPlayer15),
             prefix("sonar", "07") + "\n");
-  EXPECT_EQ(format_data_line(data_message(kSonarCode, 123, std::vector<std::uint8_t>{}), "robot1", 6665),
+  EXPECT_EQ(format_data_line(data_message(kSonarCode, 123, std::vector<std::uint8_t>{}), "robot1", 6665, kPlayer15),
             prefix("sonar", "123") + "\n");
 }
 
@@ -74,7 +77,7 @@ TEST(TextLogWriter, LaserGivesAnglesInRadiansAndRangesInMetresTimesRangeRes) {
   scan.ranges[1] = 250;
   scan.ranges[2] = 4;
   scan.intensity = {0, 1, 12};
-  EXPECT_EQ(format_data_line(data_message(kLaserCode, 0, scan), "robot1", 6665),
+  EXPECT_EQ(format_data_line(data_message(kLaserCode, 0, scan), "robot1", 6665, kPlayer15),
             prefix("laser", "00") +
                 "-1.5708 +1.5708 +0.0087 0003 1.000  0 2.500  1 0.040 12 \n");
 }
@@ -83,7 +86,7 @@ TEST(TextLogWriter, LaserWithoutReadingsStillEndsWithASpace) {
   LaserData scan;
   scan.resolution = 100;
   scan.range_res = 1;
-  EXPECT_EQ(format_data_line(data_message(kLaserCode, 1, scan), "robot1", 6665),
+  EXPECT_EQ(format_data_line(data_message(kLaserCode, 1, scan), "robot1", 6665, kPlayer15),
             prefix("laser", "01") + "+0.0000 +0.0000 +0.0175 0000 \n");
 }
 
@@ -96,7 +99,7 @@ TEST(TextLogWriter, PositionGivesMetresAndRadiansWithSignsAndZeroPadding) {
   pose.yspeed = 0;
   pose.yawspeed = -45;
   pose.stall = 1;
-  EXPECT_EQ(format_data_line(data_message(kPositionCode, 2, pose), "robot1", 6665),
+  EXPECT_EQ(format_data_line(data_message(kPositionCode, 2, pose), "robot1", 6665, kPlayer15),
             prefix("position", "02") + "+01.234 -00.567 +1.571 +00.300 +00.000 -00.785 1\n");
 }
 
@@ -110,7 +113,7 @@ TEST(TextLogWriter, Position3dGivesFourDecimalsAndArcSecondsAsRadians) {
   pose.xspeed = 100;
   pose.zspeed = -50;
   pose.yawspeed = 36000;  // 10 deg/s
-  EXPECT_EQ(format_data_line(data_message(kPosition3dCode, 0, pose), "robot1", 6665),
+  EXPECT_EQ(format_data_line(data_message(kPosition3dCode, 0, pose), "robot1", 6665, kPlayer15),
             prefix("position3d", "00") +
                 "+1.0000 -2.5000 +0.0000 +0.0175 -0.0087 +1.5708 "
                 "+0.1000 +0.0000 -0.0500 +0.0000 +0.0000 +0.1745 0\n");
@@ -130,7 +133,7 @@ TEST(TextLogWriter, GpsKeepsTheTimeQuirkOfTimeSecTwice) {
   fix.hdop = 12;
   fix.err_horz = 2500;
   fix.err_vert = 4000;
-  EXPECT_EQ(format_data_line(data_message(kGpsCode, 0, fix), "robot1", 6665),
+  EXPECT_EQ(format_data_line(data_message(kGpsCode, 0, fix), "robot1", 6665, kPlayer15),
             prefix("gps", "00") +
                 "1086001086.000 34.052199 -118.243699 71.500000 385321.000 3768800.500 "
                 "1.200 2.500 4.000 1 7\n");
@@ -141,7 +144,7 @@ TEST(TextLogWriter, TruthGivesPoseInMetresAndRadians) {
   pose.px = 5000;
   pose.py = -12345;
   pose.pa = 180;
-  EXPECT_EQ(format_data_line(data_message(kTruthCode, 0, pose), "robot1", 6665),
+  EXPECT_EQ(format_data_line(data_message(kTruthCode, 0, pose), "robot1", 6665, kPlayer15),
             prefix("truth", "00") + "+05.000 -12.345 +3.142\n");
 }
 
@@ -153,55 +156,49 @@ TEST(TextLogWriter, FiducialGivesCountThenIdRangeBearingOrientation) {
   seen.fiducials[0].upose = {10, 1, 1};  // uncertainties are not written
   seen.fiducials[1].id = -1;
   seen.fiducials[1].pose = {250, -10, 0};
-  EXPECT_EQ(format_data_line(data_message(kFiducialCode, 0, seen), "robot1", 6665),
+  EXPECT_EQ(format_data_line(data_message(kFiducialCode, 0, seen), "robot1", 6665, kPlayer15),
             prefix("fiducial", "00") + "2 7 +01.500 +00.524 -1.571 -1 +00.250 -00.175 +0.000\n");
 }
 
 TEST(TextLogWriter, FiducialWithNothingSeenIsJustTheCount) {
-  EXPECT_EQ(format_data_line(data_message(kFiducialCode, 0, FiducialData{}), "robot1", 6665),
+  EXPECT_EQ(format_data_line(data_message(kFiducialCode, 0, FiducialData{}), "robot1", 6665, kPlayer15),
             prefix("fiducial", "00") + "0\n");
 }
 
-TEST(TextLogWriter, OtherInterfacesGetThePrefixOnly) {
-  SonarData sonar;
-  sonar.range_count = 2;
-  sonar.ranges[0] = 1000;
-  sonar.ranges[1] = 2000;
-  EXPECT_EQ(format_data_line(data_message(kSonarCode, 0, sonar), "robot1", 6665),
-            prefix("sonar", "00") + "\n");
-  // wifi had a formatter in 1.5 that was never called
-  EXPECT_EQ(format_data_line(data_message(kWifiCode, 1, std::vector<std::uint8_t>(658, 0)), "robot1", 6665),
+TEST(TextLogWriter, InterfacesWithoutFieldsGetThePrefixOnly) {
+  // A wifi message without links has no groups to write (1.5's readlog format).
+  EXPECT_EQ(format_data_line(data_message(kWifiCode, 1, std::vector<std::uint8_t>(658, 0)), "robot1", 6665, kPlayer15),
             prefix("wifi", "01") + "\n");
-  EXPECT_EQ(format_data_line(data_message(kNullCode, 0, std::vector<std::uint8_t>{1, 2, 3}), "robot1", 6665),
+  EXPECT_EQ(format_data_line(data_message(kNullCode, 0, std::vector<std::uint8_t>{1, 2, 3}), "robot1", 6665, kPlayer15),
             prefix("null", "00") + "\n");
 }
 
 TEST(TextLogWriter, AZeroLengthPayloadGetsThePrefixOnlyEvenForLaser) {
-  EXPECT_EQ(format_data_line(data_message(kLaserCode, 0, std::vector<std::uint8_t>{}), "robot1", 6665),
+  EXPECT_EQ(format_data_line(data_message(kLaserCode, 0, std::vector<std::uint8_t>{}), "robot1", 6665, kPlayer15),
             prefix("laser", "00") + "\n");
 }
 
 TEST(TextLogWriter, APayloadThatDoesNotFitItsStructIsADecodeError) {
-  EXPECT_THROW(format_data_line(data_message(kLaserCode, 0, std::vector<std::uint8_t>(900, 0)), "h", 6665),
+  EXPECT_THROW(format_data_line(data_message(kLaserCode, 0, std::vector<std::uint8_t>(900, 0)), "h", 6665, kPlayer15),
                DecodeError);
-  EXPECT_THROW(format_data_line(data_message(kPositionCode, 0, std::vector<std::uint8_t>(30, 0)), "h", 6665),
+  EXPECT_THROW(format_data_line(data_message(kPositionCode, 0, std::vector<std::uint8_t>(30, 0)), "h", 6665, kPlayer15),
                DecodeError);
 }
 
 TEST(TextLogWriter, RejectsWhatTheFormatCannotHold) {
   auto not_data = data_message(kLaserCode, 0, LaserData{});
   not_data.header.type = static_cast<std::uint16_t>(MessageType::kCommand);
-  EXPECT_THROW(format_data_line(not_data, "h", 6665), std::invalid_argument);
-  EXPECT_THROW(format_data_line(data_message(99, 0, std::vector<std::uint8_t>{}), "h", 6665),
+  EXPECT_THROW(format_data_line(not_data, "h", 6665, kPlayer15), std::invalid_argument);
+  EXPECT_THROW(format_data_line(data_message(99, 0, std::vector<std::uint8_t>{}), "h", 6665, kPlayer15),
                std::invalid_argument);
-  EXPECT_THROW(format_data_line(data_message(kSonarCode, 0, std::vector<std::uint8_t>{}), "two words", 6665),
+  EXPECT_THROW(format_data_line(data_message(kSonarCode, 0, std::vector<std::uint8_t>{}), "two words", 6665, kPlayer15),
                std::invalid_argument);
-  EXPECT_THROW(format_sync_line(1.0, "", 6665), std::invalid_argument);
+  EXPECT_THROW(format_sync_line(1.0, "", 6665, kPlayer15), std::invalid_argument);
 }
 
 TEST(TextLogWriter, TheErrorNamesTheProblem) {
   try {
-    format_data_line(data_message(99, 0, std::vector<std::uint8_t>{}), "h", 6665);
+    format_data_line(data_message(99, 0, std::vector<std::uint8_t>{}), "h", 6665, kPlayer15);
     FAIL() << "no error";
   } catch (const std::invalid_argument& error) {
     EXPECT_NE(std::string(error.what()).find("interface code 99"), std::string::npos) << error.what();

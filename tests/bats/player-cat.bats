@@ -223,13 +223,13 @@ PY
   [ "$status" -eq 0 ]
   [ "${lines[0]}" = "## Player version 1.5 " ]
   [ "${lines[1]}" = "## File version 0.0.0 " ]
-  # a data line (interfaces other than laser, position, ... get the common
-  # prefix only), the round's sync line, the second data line
+  # a data line (volts, lib/log's power layout), the round's sync line, the
+  # second data line; times with microseconds
   [ "${#lines[@]}" -eq 5 ]
-  prefix="^[0-9]{10}\.[0-9]{3} 127\.0\.0\.1 $server_port"
-  [[ "${lines[2]}" =~ $prefix\ power\ 00\ [0-9]{10}\.[0-9]{3}\ $ ]]
-  [[ "${lines[3]}" =~ $prefix\ sync\ 00\ [0-9]{10}\.[0-9]{3}\ $ ]]
-  [[ "${lines[4]}" =~ $prefix\ power\ 00\ [0-9]{10}\.[0-9]{3}\ $ ]]
+  prefix="^[0-9]{10}\.[0-9]{6} 127\.0\.0\.1 $server_port"
+  [[ "${lines[2]}" =~ $prefix\ power\ 00\ [0-9]{10}\.[0-9]{6}\ 12\.6$ ]]
+  [[ "${lines[3]}" =~ $prefix\ sync\ 00\ [0-9]{10}\.[0-9]{6}\ $ ]]
+  [[ "${lines[4]}" =~ $prefix\ power\ 00\ [0-9]{10}\.[0-9]{6}\ 12\.6$ ]]
 }
 
 @test "--once prints one message per device, then exits" {

@@ -143,8 +143,8 @@ TEST_F(CatTest, LogFormatWritesPlayerLogLines) {
   EXPECT_EQ(lines[0], "## Player version 1.5 ");
   EXPECT_EQ(lines[1], "## File version 0.0.0 ");
   const std::regex laser_line(
-      R"(\d{10}\.\d{3} 127\.0\.0\.1 )" + std::to_string(server.port()) +
-      R"( laser 00 1086000000\.200 -1\.5708 \+1\.5708 \+0\.0087 0003 1\.000  0 1\.500  1 2\.000  2 )");
+      R"(\d{10}\.\d{6} 127\.0\.0\.1 )" + std::to_string(server.port()) +
+      R"( laser 00 1086000000\.200000 -1\.5708 \+1\.5708 \+0\.0087 0003 1\.000  0 1\.500  1 2\.000  2 )");
   EXPECT_TRUE(std::regex_match(lines[2], laser_line)) << lines[2];
 }
 

@@ -197,8 +197,8 @@ TEST(CsvCellTest, QuotesOnlyWhatMustBeQuoted) {
   EXPECT_EQ(csv_cell(json("two\nlines")), "\"two\nlines\"");
 }
 
-// The log lines are lib/log's (logfile-format.md §1-3); these check that
-// player-cat writes them as the spec says.
+// The log lines are lib/log's (logfile-format.md §1-3, with microsecond times,
+// lib/log's compatible extension); these check that player-cat writes them so.
 TEST(LogFormatterTest, HeaderThenLaserLinesAsWritelogWroteThem) {
   std::ostringstream out;
   auto formatter = make_log_formatter(out, {"localhost", 6665});
@@ -207,11 +207,11 @@ TEST(LogFormatterTest, HeaderThenLaserLinesAsWritelogWroteThem) {
   formatter->data({message, json::object(), 0.0});
   EXPECT_EQ(out.str(),
             "## Player version 1.5 \n## File version 0.0.0 \n"
-            "1086000000.250 localhost 6665 laser 00 1086000000.200 "
+            "1086000000.250000 localhost 6665 laser 00 1086000000.200000 "
             "-1.5708 +1.5708 +0.0087 0003 1.000  0 1.500  1 2.000  2 \n");
 }
 
-TEST(LogFormatterTest, OtherInterfacesGetThePrefixAndRoundsASyncLine) {
+TEST(LogFormatterTest, PowerAndRoundsASyncLine) {
   std::ostringstream out;
   auto formatter = make_log_formatter(out, {"robot1", 7000});
   protocol::Message synch;
@@ -222,8 +222,8 @@ TEST(LogFormatterTest, OtherInterfacesGetThePrefixAndRoundsASyncLine) {
   formatter->synch(synch);
   EXPECT_EQ(out.str(),
             "## Player version 1.5 \n## File version 0.0.0 \n"
-            "1086000000.250 robot1 7000 power 00 1086000000.200 \n"
-            "1086000000.300 robot1 7000 sync 00 1086000000.300 \n");
+            "1086000000.250000 robot1 7000 power 00 1086000000.200000 12.6\n"
+            "1086000000.300000 robot1 7000 sync 00 1086000000.300000 \n");
 }
 
 }  // namespace
