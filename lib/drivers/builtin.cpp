@@ -1,6 +1,8 @@
 #include "drivers/builtin.hpp"
 
 #include "drivers/comms/udpbroadcast_driver.hpp"
+#include "drivers/logfile/readlog_driver.hpp"
+#include "drivers/logfile/writelog_driver.hpp"
 #include "drivers/mcom/lifomcom_driver.hpp"
 #include "drivers/null/null_driver.hpp"
 #include "drivers/passthrough/passthrough_driver.hpp"
@@ -12,6 +14,8 @@ void register_builtin_drivers(core::DriverRegistry& registry) {
   registry.add(lifomcom_driver_spec());
   registry.add(udpbroadcast_driver_spec());
   registry.add(passthrough_driver_spec());
+  registry.add(readlog_driver_spec());
+  registry.add(writelog_driver_spec());
 }
 
 }  // namespace playerkit::drivers

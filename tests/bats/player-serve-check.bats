@@ -16,7 +16,7 @@ load helpers
   [ "$status" -eq 0 ]
   [[ "$output" =~ mcom:0\ +driver\ lifomcom,\ robot\ mailbox ]]  # built in: no mark
   run "$player_serve" --check "$repo_root/data/config/record.cfg"
-  [[ "$output" =~ null:0\ +driver\ writelog\ \(not\ in\ this\ build\),\ always\ on ]]
+  [[ "$output" =~ null:0\ +driver\ writelog,\ always\ on ]]
 }
 
 @test "--check -p changes the port of devices outside robot sections" {

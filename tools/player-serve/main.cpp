@@ -20,6 +20,9 @@ constexpr const char* kExamples = R"(Examples:
   player-serve -k secret robot.cfg     clients must authenticate with key "secret"
   player-serve -d ./libmydriver.so robot.cfg   load extra drivers from a plugin
   player-serve --check robot.cfg       validate robot.cfg and list its devices
+  player-serve -r run.log -f 2 replay.cfg   replay run.log at twice its speed to the
+                                       readlog devices of replay.cfg, e.g.
+                                       position:0 ( driver "readlog" )
 
 Signals: SIGINT, SIGTERM and SIGHUP stop accepting clients, shut every device
 down and exit 0.
@@ -51,8 +54,8 @@ int main(int argc, char** argv) {
   app.add_option("-k,--key", key, "require clients to authenticate with this key (31 characters used)");
   app.add_option("-d,--plugin", options.plugins, "load drivers from this shared object (repeatable)");
   app.add_option("--bind", options.bind_address, "address to listen on")->capture_default_str();
-  app.add_option("-r,--readlog", readlog, "replay this log file (not built yet)");
-  app.add_option("-f,--readlogspeed", readlog_speed, "replay speed factor for -r");
+  app.add_option("-r,--readlog", readlog, "replay this log file: the devices with driver readlog serve its data");
+  app.add_option("-f,--readlogspeed", readlog_speed, "replay speed factor for -r (2 = twice as fast)");
   app.add_option("-t,--transport", transport, "tcp (udp is not available)")->capture_default_str();
   app.add_option("-s", stage_directory, "Stage devices (not available in playerkit)");
   app.add_option("-g", gazebo_id, "Gazebo server (not available in playerkit)");
@@ -76,9 +79,13 @@ int main(int argc, char** argv) {
               << "' is not available: playerkit serves clients over TCP only\n";
     return 2;
   }
+  if (!(readlog_speed > 0 && readlog_speed < 1e6)) {
+    std::cerr << "player-serve: -f " << readlog_speed << ": the replay speed must be above 0 and below 1000000\n";
+    return 2;
+  }
   if (!readlog.empty()) {
-    std::cerr << "player-serve: readlog (-r) is not built yet\n";
-    return 1;
+    options.readlog = readlog;
+    options.readlog_speed = readlog_speed;
   }
   if (check) {
     playerkit::core::Logger logger("player-serve");

@@ -10,6 +10,7 @@
 #include "core/instantiate.hpp"
 #include "core/plugin.hpp"
 #include "drivers/builtin.hpp"
+#include "drivers/logfile/readlog_driver.hpp"
 #include "server/server.hpp"
 
 namespace playerkit::serve {
@@ -34,7 +35,12 @@ core::DriverRegistry load_drivers(const std::vector<std::string>& plugins, core:
 int serve(const ServeOptions& options) {
   core::Logger logger("player-serve");
   logger.set_level(options.log_level);
-  core::WallClock clock;
+  // With -r every header time the server writes is log time: the readlog
+  // reader of that file sets log_clock as it replays (logfile-format.md §5).
+  core::WallClock wall_clock;
+  core::ManualClock log_clock;
+  const core::Clock& clock =
+      options.readlog ? static_cast<const core::Clock&>(log_clock) : static_cast<const core::Clock&>(wall_clock);
 
   core::DriverRegistry registry;
   try {
@@ -42,6 +48,10 @@ int serve(const ServeOptions& options) {
   } catch (const core::PluginError& e) {
     logger.error(e.what());
     return kFailure;
+  }
+  if (options.readlog) {
+    // Replaces a plugin's readlog too: -r names what the built-in one replays.
+    registry.add(drivers::readlog_driver_spec({*options.readlog, options.readlog_speed, &log_clock, nullptr}));
   }
 
   server::ServerOptions server_options;
@@ -64,6 +74,13 @@ int serve(const ServeOptions& options) {
     for (const auto& warning : config.warnings()) logger.warning(warning.to_string());
     core::instantiate_devices(config, registry, devices, clock, logger);
     for (const auto& warning : config.unused_properties()) logger.warning(warning.to_string());
+    const auto served = devices.all();
+    if (options.readlog && std::none_of(served.begin(), served.end(), [](const core::Device* device) {
+          return device->info().driver_name == "readlog";
+        })) {
+      logger.warning("-r " + *options.readlog + ": no device of " + options.config_path +
+                     " has driver \"readlog\"; nothing is replayed");
+    }
     if (devices.empty()) {
       logger.error(options.config_path + ": no devices declared, nothing to serve");
       return kBadConfig;

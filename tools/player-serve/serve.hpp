@@ -19,6 +19,9 @@ struct ServeOptions {
   std::optional<std::string> auth_key;
   std::vector<std::string> plugins;
   core::LogLevel log_level = core::LogLevel::kInfo;
+  // -r: readlog devices replay this file and the server clock follows it.
+  std::optional<std::string> readlog;
+  double readlog_speed = 1.0;  // -f
 };
 
 // The built-in drivers plus those of the plugins. Throws core::PluginError.

@@ -1,0 +1,90 @@
+#pragma once
+// One pass (or endless passes, with autorewind) over a Player text log, shared
+// by every readlog device that reads the same file with the same options: one
+// reader thread, as 1.5's readlog manager had, so devices stay in step.
+//
+// Pacing follows the time each line was logged (token 0, which writelog writes
+// in file order): the line logged t seconds after the first one served goes
+// out t / speed seconds after replay started. Data lines are published with
+// their logged data time (token 5) as the timestamp. When a clock is given it
+// is set to each line's logged time as the line goes out, so the server's own
+// header times follow the log; after the end of the file (without autorewind)
+// it keeps running from the last logged time at `speed`.
+//
+// The thread starts at the first attach() and, as in 1.5, does not pause when
+// devices detach: the log plays on like a live robot.
+
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <stop_token>
+#include <thread>
+#include <vector>
+
+#include "core/clock.hpp"
+#include "core/device.hpp"
+#include "core/logger.hpp"
+#include "drivers/logfile/replay_timer.hpp"
+#include "log/text_log_reader.hpp"
+#include "protocol/device_address.hpp"
+
+namespace playerkit::drivers {
+
+struct ReplayOptions {
+  std::filesystem::path path;
+  double speed = 1.0;        // > 0; 2 plays twice as fast
+  bool autorewind = false;   // start again at the end of the file
+  double start_offset = 0.0;  // seconds after the first logged line; earlier lines are skipped
+};
+
+class ReplaySession {
+ public:
+  // Opens the log and reads up to its first sync or data line, so that a
+  // missing, unreadable or empty log is refused before serving starts (throws
+  // std::runtime_error or log::LogParseError). `clock` may be null; `timer`
+  // null means real time.
+  ReplaySession(ReplayOptions options, core::ManualClock* clock,
+                std::shared_ptr<ReplayTimer> timer, core::Logger& logger);
+  ~ReplaySession();
+  ReplaySession(const ReplaySession&) = delete;
+  ReplaySession& operator=(const ReplaySession&) = delete;
+
+  // `device` gets every logged data line of `logged` from now on.
+  void attach(core::Device& device, protocol::DeviceAddress logged);
+  // After this returns, nothing more is published on `device`.
+  void detach(core::Device& device);
+
+  [[nodiscard]] const ReplayOptions& options() const { return options_; }
+  [[nodiscard]] protocol::Timestamp first_log_time() const { return first_log_time_; }
+  // Lines that could not be read (skipped with a warning).
+  [[nodiscard]] std::uint64_t malformed_lines() const { return malformed_lines_; }
+
+ private:
+  struct Target {
+    core::Device* device;
+    protocol::DeviceAddress logged;
+  };
+
+  void run(const std::stop_token& stop);
+  // One pass over the file; false when stopped. `served` counts lines served.
+  bool replay_file(const std::stop_token& stop, std::uint64_t& served);
+  void follow_clock_after_end(const std::stop_token& stop);
+  void deliver(const log::DataLine& line);
+
+  const ReplayOptions options_;
+  core::ManualClock* const clock_;
+  const std::shared_ptr<ReplayTimer> timer_;
+  core::Logger& logger_;
+  protocol::Timestamp first_log_time_;
+  protocol::Timestamp last_log_time_;
+  std::atomic<std::uint64_t> malformed_lines_{0};
+
+  std::mutex targets_mutex_;  // held while publishing, so detach() waits for it
+  std::vector<Target> targets_;
+  bool started_ = false;  // under targets_mutex_
+  std::jthread thread_;   // last: stops before the rest goes
+};
+
+}  // namespace playerkit::drivers

@@ -1,0 +1,212 @@
+#include "drivers/logfile/writelog_driver.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <chrono>
+#include <exception>
+#include <utility>
+
+#include "config/errors.hpp"
+#include "log/text_log_writer.hpp"
+#include "protocol/device_address.hpp"
+#include "protocol/interfaces.hpp"
+#include "protocol/message.hpp"
+
+namespace playerkit::drivers {
+
+namespace {
+
+// 1.5 wrote one sync line per 100 ms cycle; its readlog paced replay by them.
+constexpr std::uint64_t kSyncPeriodMicroseconds = 100'000;
+// How long the thread sleeps without data before checking for a due sync line.
+constexpr std::chrono::milliseconds kIdleWait{20};
+
+}  // namespace
+
+std::string log_host_name() {
+  std::array<char, 256> buffer{};
+  if (gethostname(buffer.data(), buffer.size() - 1) != 0) return "localhost";
+  std::string name(buffer.data());
+  const bool usable = !name.empty() && std::none_of(name.begin(), name.end(), [](char c) {
+    return std::isspace(static_cast<unsigned char>(c)) != 0 || std::iscntrl(static_cast<unsigned char>(c)) != 0;
+  });
+  return usable ? name : "localhost";
+}
+
+WritelogDriver::WritelogDriver(std::string filename, std::vector<core::DeviceKey> sources,
+                               core::DeviceTable& devices, std::string host)
+    : filename_(std::move(filename)),
+      source_keys_(std::move(sources)),
+      devices_(devices),
+      host_(std::move(host)) {}
+
+WritelogDriver::~WritelogDriver() {
+  // Normally close() has run; never leave a listener pointing at a dead driver.
+  for (core::Device* source : sources_) source->remove_listener(this);
+}
+
+void WritelogDriver::open() {
+  std::vector<core::Device*> found;
+  for (const core::DeviceKey& key : source_keys_) {
+    core::Device* source = devices_.find(key.port, key.address);
+    if (source == nullptr || source == &device()) {
+      throw core::DriverError("writelog: no device " + core::to_string(key) + " to record");
+    }
+    found.push_back(source);
+  }
+  out_.open(filename_, std::ios::out | std::ios::trunc);
+  if (!out_) throw core::DriverError("writelog: cannot write " + filename_);
+  write_failed_ = false;
+  write_line(log::log_file_header());
+  last_sync_us_ = core::to_microseconds(device().clock().now());
+  {
+    std::lock_guard lock(pending_mutex_);
+    pending_.clear();
+    last_sequence_.clear();
+    // Samples published before set-up are not new: record what comes next.
+    for (core::Device* source : found) last_sequence_[source] = source->latest_data()->sequence;
+    accepting_ = true;
+  }
+  // Listen before subscribing: a source may publish from its setup() on
+  // (readlog sends its first line at once), and that sample must go in too.
+  for (core::Device* source : found) {
+    source->add_listener(this);
+    sources_.push_back(source);
+    if (!source->subscribe()) {
+      sources_.pop_back();
+      source->remove_listener(this);
+      for (core::Device* held : sources_) held->remove_listener(this);
+      release_sources();
+      out_.close();
+      throw core::DriverError("writelog: " + source->name() + " could not be set up");
+    }
+  }
+}
+
+void WritelogDriver::close() {
+  // Stop listening first: after this, everything received is in pending_.
+  for (core::Device* source : sources_) source->remove_listener(this);
+  {
+    // A sample whose notification is still on its way is already in its
+    // device: take it from there.
+    std::lock_guard lock(pending_mutex_);
+    accepting_ = false;
+    for (const core::Device* source : sources_) collect_new_samples(*source);
+  }
+  write_pending();
+  out_.close();
+  release_sources();
+}
+
+void WritelogDriver::release_sources() {
+  for (core::Device* source : sources_) source->unsubscribe();
+  sources_.clear();
+}
+
+void WritelogDriver::run(std::stop_token stop) {
+  while (!stop.stop_requested()) {
+    device().service_requests();
+    {
+      std::unique_lock lock(pending_mutex_);
+      pending_ready_.wait_for(lock, stop, kIdleWait, [this] { return !pending_.empty(); });
+    }
+    write_pending();
+    write_sync_if_due();
+  }
+}
+
+void WritelogDriver::data_published(const core::Device& source) {
+  std::lock_guard lock(pending_mutex_);
+  if (!accepting_) return;
+  collect_new_samples(source);
+  pending_ready_.notify_one();
+}
+
+void WritelogDriver::collect_new_samples(const core::Device& source) {
+  std::uint64_t& last = last_sequence_[&source];
+  // A queued device keeps every sample; otherwise the newest is the one just published.
+  const auto samples = source.queues_data() ? source.data_since(last)
+                                            : std::vector{source.latest_data()};
+  for (const auto& sample : samples) {
+    if (sample->sequence <= last) continue;
+    last = sample->sequence;
+    pending_.push_back({source.address(), sample});
+  }
+}
+
+void WritelogDriver::write_pending() {
+  std::deque<Pending> batch;
+  {
+    std::lock_guard lock(pending_mutex_);
+    batch.swap(pending_);
+  }
+  const std::uint16_t port = device().key().port;
+  for (const Pending& entry : batch) {
+    protocol::Message message;
+    message.header = protocol::make_header(protocol::MessageType::kData, entry.address,
+                                           device().clock().now(), entry.sample->timestamp);
+    message.header.size = static_cast<std::uint32_t>(entry.sample->payload.size());
+    message.payload = entry.sample->payload;
+    try {
+      write_line(log::format_data_line(message, host_, port));
+    } catch (const std::exception& e) {
+      device().logger().warning(device().name() + ": sample of " + protocol::to_string(entry.address) +
+                                " not recorded: " + e.what());
+    }
+  }
+}
+
+void WritelogDriver::write_sync_if_due() {
+  const protocol::Timestamp now = device().clock().now();
+  const std::uint64_t now_us = core::to_microseconds(now);
+  if (now_us < last_sync_us_ + kSyncPeriodMicroseconds) return;
+  last_sync_us_ = now_us;
+  write_line(log::format_sync_line(now.seconds(), host_, device().key().port));
+}
+
+void WritelogDriver::write_line(const std::string& line) {
+  out_ << line;
+  out_.flush();  // a crash or kill -9 loses at most the line being written
+  if (!out_ && !write_failed_) {
+    write_failed_ = true;
+    device().logger().error(device().name() + ": writing " + filename_ + " failed");
+  }
+}
+
+core::DriverSpec writelog_driver_spec() {
+  core::DriverSpec spec;
+  spec.name = "writelog";
+  spec.interfaces = {protocol::kNullCode};
+  spec.access = protocol::Access::kRead;
+  spec.factory = [](const core::DriverContext& context) -> std::unique_ptr<core::Driver> {
+    const config::Section& section = context.section;
+    // A plain string, relative to the server's working directory, as in 1.5.
+    std::string filename = section.read_string("filename", "writelog.log");
+    if (filename.empty()) throw config::ConfigError(section.where(), "writelog: filename is empty");
+    std::vector<core::DeviceKey> sources;
+    const std::size_t count = section.tuple_size("devices");
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::string text = section.read_tuple_string("devices", i, "");
+      const auto address = protocol::parse_device_address(text);
+      if (!address) {
+        throw config::ConfigError(section.property("devices")->values[i].where,
+                                  "writelog: devices entry \"" + text +
+                                      "\" is not interface:index (e.g. \"laser:0\")");
+      }
+      sources.push_back({context.key.port, *address});
+    }
+    if (sources.empty()) {
+      throw config::ConfigError(section.where(),
+                                "writelog: no devices to record: give devices [\"laser:0\" ...]");
+    }
+    return std::make_unique<WritelogDriver>(std::move(filename), std::move(sources), context.devices,
+                                            log_host_name());
+  };
+  spec.summary = "records the data of other devices into a Player text log";
+  return spec;
+}
+
+}  // namespace playerkit::drivers
