@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <thread>
 #include <utility>
 
 #include "protocol/catalog.hpp"
@@ -132,7 +133,7 @@ void Device::publish(std::vector<std::uint8_t> payload, Timestamp timestamp) {
       if (history_.size() > info_.limits.data_queue) history_.pop_front();
     }
   }
-  for (DeviceListener* listener : listeners_copy()) listener->data_published(*this);
+  notify_listeners(&DeviceListener::data_published);
 }
 
 std::shared_ptr<const DataSample> Device::latest_data() const {
@@ -221,7 +222,7 @@ void Device::post_reply(Reply reply) {
     std::lock_guard lock(mutex_);
     replies_.push_back(std::move(reply));
   }
-  for (DeviceListener* listener : listeners_copy()) listener->replies_ready(*this);
+  notify_listeners(&DeviceListener::replies_ready);
 }
 
 std::vector<Reply> Device::take_replies() {
@@ -230,18 +231,36 @@ std::vector<Reply> Device::take_replies() {
 }
 
 void Device::add_listener(DeviceListener* listener) {
-  std::lock_guard lock(mutex_);
+  std::lock_guard lock(listeners_mutex_);
   listeners_.push_back(listener);
 }
 
 void Device::remove_listener(DeviceListener* listener) {
-  std::lock_guard lock(mutex_);
+  std::unique_lock lock(listeners_mutex_);
   std::erase(listeners_, listener);
+  // A notification may be under way with a copy of the list: once this returns
+  // the listener may be destroyed, so wait for calls on other threads to end.
+  // (A listener removing itself from inside its own callback must not wait on itself.)
+  const auto self = std::this_thread::get_id();
+  notifications_done_.wait(lock, [&] {
+    return std::ranges::all_of(notifying_threads_, [&](std::thread::id id) { return id == self; });
+  });
 }
 
-std::vector<DeviceListener*> Device::listeners_copy() const {
-  std::lock_guard lock(mutex_);
-  return listeners_;
+void Device::notify_listeners(void (DeviceListener::*event)(const Device&)) {
+  std::vector<DeviceListener*> listeners;
+  {
+    std::lock_guard lock(listeners_mutex_);
+    if (listeners_.empty()) return;
+    listeners = listeners_;
+    notifying_threads_.push_back(std::this_thread::get_id());
+  }
+  for (DeviceListener* listener : listeners) (listener->*event)(*this);
+  {
+    std::lock_guard lock(listeners_mutex_);
+    notifying_threads_.erase(std::ranges::find(notifying_threads_, std::this_thread::get_id()));
+  }
+  notifications_done_.notify_all();
 }
 
 }  // namespace playerkit::core

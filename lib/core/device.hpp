@@ -12,6 +12,7 @@
 // driver's setup(), the last its shutdown(). A client with 'a' access holds two.
 // All members are thread-safe unless noted.
 
+#include <condition_variable>
 #include <cstddef>
 #include <cstdint>
 #include <deque>
@@ -20,6 +21,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "core/clock.hpp"
@@ -147,7 +149,9 @@ class Device {
   void remove_listener(DeviceListener* listener);
 
  private:
-  std::vector<DeviceListener*> listeners_copy() const;
+  // Calls `event` on every listener, outside every lock but the list's own
+  // bookkeeping, so that listeners may call back into this device.
+  void notify_listeners(void (DeviceListener::*event)(const Device&));
   [[nodiscard]] std::optional<std::string> unavailable_reason() const;
 
   const DeviceKey key_;
@@ -175,7 +179,11 @@ class Device {
   std::deque<Command> command_queue_;  // command-queue devices only
   std::deque<Request> requests_;
   std::vector<Reply> replies_;
+
+  mutable std::mutex listeners_mutex_;  // the three below
   std::vector<DeviceListener*> listeners_;
+  std::vector<std::thread::id> notifying_threads_;  // notifications under way
+  std::condition_variable notifications_done_;
 };
 
 }  // namespace playerkit::core

@@ -88,6 +88,53 @@ TEST_F(DeviceFixture, EverySetupStartsAvailable) {
   EXPECT_EQ(counts.setup, 2);
 }
 
+TEST_F(DeviceFixture, RemovingAListenerWaitsForItsCallbackUnderWayOnAnotherThread) {
+  struct BlockingListener : DeviceListener {
+    std::atomic<bool> inside{false};
+    std::atomic<bool> release{false};
+    void data_published(const Device&) override {
+      inside = true;
+      while (!release) std::this_thread::yield();
+    }
+    void replies_ready(const Device&) override {}
+  };
+  auto device = make();
+  BlockingListener listener;
+  device->add_listener(&listener);
+  std::thread publisher([&] { device->publish({1}, {}); });
+  while (!listener.inside) std::this_thread::yield();
+  std::atomic<bool> removed{false};
+  std::thread remover([&] {
+    device->remove_listener(&listener);
+    removed = true;
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  EXPECT_FALSE(removed);  // the callback is still running: the listener must stay alive
+  listener.release = true;
+  remover.join();
+  publisher.join();
+  EXPECT_TRUE(removed);
+}
+
+TEST_F(DeviceFixture, AListenerMayRemoveItselfFromItsOwnCallback) {
+  struct SelfRemovingListener : DeviceListener {
+    Device* device = nullptr;
+    int calls = 0;
+    void data_published(const Device&) override {
+      ++calls;
+      device->remove_listener(this);
+    }
+    void replies_ready(const Device&) override {}
+  };
+  auto device = make();
+  SelfRemovingListener listener;
+  listener.device = device.get();
+  device->add_listener(&listener);
+  device->publish({1}, {});
+  device->publish({2}, {});
+  EXPECT_EQ(listener.calls, 1);
+}
+
 TEST_F(DeviceFixture, RefusedSetupLeavesCountAtZero) {
   auto device = make(Access::kAll, /*refuse=*/true);
   EXPECT_FALSE(device->subscribe());
