@@ -1,0 +1,134 @@
+#include "log_convert.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <variant>
+
+#include "log/carmen_log_reader.hpp"
+#include "log/log_input.hpp"
+#include "log/text_log_reader.hpp"
+#include "log_info.hpp"
+#include "protocol/interfaces.hpp"
+
+namespace playerkit::plog {
+namespace {
+
+const std::filesystem::path kIntel =
+    std::filesystem::path(PLAYERKIT_TEST_DATA_DIR) / "radish" / "intel-corrected.log.gz";
+
+std::string temp(const std::string& name) { return (std::filesystem::path(::testing::TempDir()) / name).string(); }
+
+ConvertOptions convert_options(const std::string& input, const std::string& output,
+                               std::optional<ConvertTarget> to = std::nullopt,
+                               std::vector<protocol::DeviceAddress> devices = {}) {
+  ConvertOptions options;
+  options.input = input;
+  options.output = output;
+  options.to = to;
+  options.devices = std::move(devices);
+  return options;
+}
+
+CutOptions cut_options(const std::string& input, std::optional<double> start, std::optional<double> end,
+                       std::vector<protocol::DeviceAddress> devices = {}) {
+  CutOptions options;
+  options.input = input;
+  options.output = std::string("-");  // (GCC 12 warns falsely on assigning the literal)
+  options.start = start;
+  options.end = end;
+  options.devices = std::move(devices);
+  return options;
+}
+
+std::string convert(ConvertOptions options) {
+  std::ostringstream out, err;
+  Progress progress(err, false);
+  run_convert(options, out, err, progress);
+  return out.str();
+}
+
+std::map<std::string, std::size_t> counts(const std::string& path) {
+  std::ostringstream err;
+  Progress progress(err, false);
+  std::map<std::string, std::size_t> result;
+  for (const auto& [name, stream] : summarize_log(path, true, progress).streams) result[name] = stream.count;
+  return result;
+}
+
+TEST(Convert, CarmenToPlayerAndBackKeepsEveryScan) {
+  convert(convert_options(kIntel.string(), temp("intel.player.log")));
+  EXPECT_EQ(counts(temp("intel.player.log")),
+            (std::map<std::string, std::size_t>{{"laser:0", 910}, {"position:0", 910 + 14541}, {"truth:0", 910}}));
+  convert(convert_options(temp("intel.player.log"), temp("intel.carmen.log")));
+  EXPECT_EQ(counts(temp("intel.carmen.log")),
+            (std::map<std::string, std::size_t>{{"FLASER", 910}, {"ODOM", 14541}}));
+
+  // The ranges of the first scan, to the file's precision (1 cm with 81.83 m readings).
+  const auto first_scan = [](const std::string& path) {
+    auto in = log::open_log_input(path);
+    log::CarmenLogReader reader(*in, path);
+    while (auto record = reader.next()) {
+      if (auto* scan = std::get_if<log::CarmenLaser>(&*record)) return scan->ranges;
+    }
+    return std::vector<double>{};
+  };
+  const auto original = first_scan(kIntel.string());
+  const auto back = first_scan(temp("intel.carmen.log"));
+  ASSERT_EQ(back.size(), 180u);
+  ASSERT_EQ(original.size(), back.size());
+  for (std::size_t i = 0; i < back.size(); ++i) EXPECT_NEAR(back[i], original[i], 0.0051) << i;
+}
+
+TEST(Convert, JsonLinesAndCsvOfOneDevice) {
+  const auto jsonl = convert(convert_options(kIntel.string(), "-", ConvertTarget::kJsonl, {{protocol::kLaserCode, 0}}));
+  std::istringstream lines(jsonl);
+  std::string line;
+  std::size_t scans = 0;
+  while (std::getline(lines, line)) {
+    const auto json = nlohmann::json::parse(line);
+    EXPECT_EQ(json["device"], "laser");
+    EXPECT_EQ(json["data"]["range_count"], 180);
+    ++scans;
+  }
+  EXPECT_EQ(scans, 910u);
+
+  const auto csv = convert(convert_options(kIntel.string(), "-", ConvertTarget::kCsv, {{protocol::kPositionCode, 0}}));
+  EXPECT_EQ(csv.rfind("time,timestamp,device,index,", 0), 0u) << csv.substr(0, 200);
+  EXPECT_EQ(static_cast<std::size_t>(std::count(csv.begin(), csv.end(), '\n')), 1u + 910u + 14541u);
+  EXPECT_THROW(convert(convert_options(kIntel.string(), "-", ConvertTarget::kCsv)), UsageError);
+  EXPECT_THROW(parse_convert_target("xml"), UsageError);
+}
+
+TEST(Cut, KeepsTheWindowAndTheDevicesByteForByte) {
+  const std::string header = "## Player version 1.5 \n## File version 0.0.0 \n";
+  const std::string lines[] = {
+      "100.000 h 6665 position 00 100.000 +0.000 +0.000 +0.000 +0.000 +0.000 +0.000 0",
+      "101.000 h 6665 truth 00 101.000 +1.000 +2.000 +0.500",
+      "101.000 h 6665 sync 00 101.000 ",
+      "102.000 h 6665 position 00 102.000 +2.000 +0.000 +0.000 +0.000 +0.000 +0.000 0",
+      "103.500 h 6665 position 00 103.500 +3.000 +0.000 +0.000 +0.000 +0.000 +0.000 0",
+  };
+  {
+    std::ofstream file(temp("cut-in.log"));
+    file << header;
+    for (const auto& l : lines) file << l << "\n";
+  }
+  std::ostringstream out, err;
+  Progress progress(err, false);
+  run_cut(cut_options(temp("cut-in.log"), 1.0, 2.0), out, err, progress);
+  EXPECT_EQ(out.str(), header + lines[1] + "\n" + lines[2] + "\n" + lines[3] + "\n");
+  out.str("");
+  run_cut(cut_options(temp("cut-in.log"), 1.0, std::nullopt, {{protocol::kPositionCode, 0}}), out, err, progress);
+  EXPECT_EQ(out.str(), header + lines[2] + "\n" + lines[3] + "\n" + lines[4] + "\n");
+  EXPECT_THROW(run_cut(cut_options(kIntel.string(), std::nullopt, std::nullopt), out, err, progress), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace playerkit::plog

@@ -1,0 +1,166 @@
+// player-log: inspect, convert, cut and record Player (and CARMEN) logs. See --help.
+
+#include <CLI/CLI.hpp>
+#include <csignal>
+#include <iostream>
+#include <string>
+#include <unistd.h>
+
+#include "log/log_parse_error.hpp"
+#include "log_convert.hpp"
+#include "log_info.hpp"
+#include "log_record.hpp"
+#include "log_tool.hpp"
+
+namespace {
+
+namespace plog = playerkit::plog;
+
+constexpr const char* kFooter = R"(Formats: Player 1.5 text logs (file version 0.0.0 and 1.6.5's 0.2.0) and CARMEN
+logs, told apart by their content; either may be gzip-compressed (.gz).
+
+Examples:
+  player-log info intel.log.gz                 format, devices, counts, rates, span, gaps
+  player-log info run.log --json               the same as one JSON object
+  player-log convert intel.log.gz -o intel.player.log     CARMEN -> Player
+  player-log convert run.log -o run.carmen.log --to carmen
+  player-log convert run.log -o - --to jsonl | jq .data.range_count
+  player-log convert run.log -o laser.csv --devices laser:0
+  player-log cut run.log -o part.log --start 10 --end 20 --devices laser:0
+  player-log record laser:0 position:0 -o run.log --duration 60
+  player-log record robot1:7000 laser -o run.log -n 100
+  player-cat laser --format log | player-log record - -o run.log
+
+CARMEN -> Player: FLASER gives laser:0, position:0 (the odometry pose) and
+truth:0 (the laser's pose); ODOM gives position:0. Player -> CARMEN: the reverse
+(laser:0 -> FLASER, position:0 -> ODOM). Player's units hold mm and whole degrees.
+
+Stdout carries data only (info, or -o -); messages go to stderr. Long runs show
+progress on stderr when it is a terminal. Malformed lines are skipped and
+counted (the first few shown as file:line:col: what), or fatal with --strict.
+Signals: SIGINT and SIGTERM stop record cleanly (every line received is written), exit 0.
+Exit status: 0 done, 1 runtime error (missing or unreadable file, malformed
+line with --strict, cannot connect, no such device), 2 usage error.)";
+
+volatile std::sig_atomic_t stop_signal = 0;
+
+void request_stop(int signal_number) { stop_signal = signal_number; }
+
+void install_signal_handlers() {
+  struct sigaction action {};
+  action.sa_handler = request_stop;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+  std::signal(SIGPIPE, SIG_IGN);
+}
+
+// Runs a subcommand, turning its errors into messages and exit statuses.
+template <typename Body>
+int guarded(Body&& body) {
+  try {
+    body();
+    return plog::kExitOk;
+  } catch (const plog::UsageError& e) {
+    std::cerr << "player-log: " << e.what() << "\nRun with --help for more information.\n";
+    return plog::kExitUsage;
+  } catch (const std::exception& e) {
+    std::cerr << "player-log: " << e.what() << "\n";
+    return plog::kExitFailure;
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"player-log SUBCOMMAND ...: inspect, convert, cut and record Player and CARMEN logs."};
+  app.footer(kFooter);
+  app.set_version_flag("--version", std::string("player-log (playerkit) ") + PLAYERKIT_VERSION);
+  app.require_subcommand(1);
+
+  bool strict = false;
+  std::string devices;
+
+  auto* info = app.add_subcommand("info", "format, devices with counts and rates, time span, gaps, malformed lines");
+  std::string info_file;
+  bool json = false;
+  info->add_option("FILE", info_file, "the log")->required();
+  info->add_flag("--json", json, "one JSON object instead of text");
+  info->add_flag("--strict", strict, "a malformed line is an error (exit 1)");
+
+  auto* convert = app.add_subcommand("convert", "Player <-> CARMEN, or to JSON lines / CSV");
+  plog::ConvertOptions convert_options;
+  std::string to;
+  convert->add_option("IN", convert_options.input, "the log to read")->required();
+  convert->add_option("-o,--output", convert_options.output, "where to write (- for stdout)")->required();
+  convert->add_option("--to", to,
+                      "player, carmen, jsonl or csv (default: by -o's extension, else the other log format)");
+  convert->add_option("--devices", devices, "only these devices: laser:0,position:0");
+  convert->add_flag("--si", convert_options.si, "jsonl/csv: metres and radians instead of wire units");
+  convert->add_flag("--strict", strict, "a malformed line is an error (exit 1)");
+
+  auto* cut = app.add_subcommand("cut", "a time window and/or some devices of a Player log");
+  plog::CutOptions cut_options;
+  cut->add_option("FILE", cut_options.input, "the Player log")->required();
+  cut->add_option("-o,--output", cut_options.output, "where to write (- for stdout)")->required();
+  cut->add_option("--start", cut_options.start, "from S seconds after the log's first time")->type_name("S");
+  cut->add_option("--end", cut_options.end, "up to S seconds after the log's first time")->type_name("S");
+  cut->add_option("--devices", devices, "only these devices: laser:0,position:0 (sync lines stay)");
+  cut->add_flag("--strict", strict, "a malformed line is an error (exit 1)");
+
+  auto* record = app.add_subcommand("record", "record devices of a server (or player-cat --format log on stdin)");
+  plog::RecordOptions record_options;
+  std::vector<std::string> targets;
+  record->add_option("TARGETS", targets, "[HOST[:PORT]] DEVICE..., or - to read log lines from stdin")
+      ->required();
+  record->add_option("-o,--output", record_options.output, "the log to write (- for stdout)")->required();
+  record->add_option("--duration", record_options.duration, "stop after S seconds")->type_name("S");
+  record->add_option("-n,--count", record_options.count, "stop after N data messages")->type_name("N");
+  record->add_option("--timeout", record_options.timeout, "seconds to wait for the connection and each reply")
+      ->capture_default_str();
+  record->add_flag("--strict", strict, "stdin: a malformed line is an error (exit 1)");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? plog::kExitOk : plog::kExitUsage;
+  }
+
+  plog::Progress progress(std::cerr, isatty(STDERR_FILENO) == 1);
+  if (info->parsed()) {
+    return guarded([&] {
+      const auto summary = plog::summarize_log(info_file, strict, progress);
+      if (json) std::cout << plog::summary_json(summary).dump(2) << "\n";
+      else plog::print_summary(summary, std::cout);
+      for (const auto& text : summary.malformed_texts) std::cerr << text << "\n";
+    });
+  }
+  if (convert->parsed()) {
+    return guarded([&] {
+      convert_options.strict = strict;
+      if (!to.empty()) convert_options.to = plog::parse_convert_target(to);
+      if (!devices.empty()) convert_options.devices = plog::parse_device_list(devices);
+      plog::run_convert(convert_options, std::cout, std::cerr, progress);
+    });
+  }
+  if (cut->parsed()) {
+    return guarded([&] {
+      cut_options.strict = strict;
+      if (!devices.empty()) cut_options.devices = plog::parse_device_list(devices);
+      if (cut_options.start && cut_options.end && *cut_options.end < *cut_options.start) {
+        throw plog::UsageError("--end is before --start");
+      }
+      plog::run_cut(cut_options, std::cout, std::cerr, progress);
+    });
+  }
+  int status = plog::kExitUsage;
+  const int parsed = guarded([&] {
+    record_options.strict = strict;
+    plog::parse_record_targets(targets, record_options);
+    if (record_options.duration && *record_options.duration <= 0) throw plog::UsageError("--duration must be > 0");
+    if (record_options.timeout <= 0) throw plog::UsageError("--timeout must be > 0");
+    install_signal_handlers();
+    status = plog::run_record(record_options, std::cin, std::cout, std::cerr, [] { return stop_signal != 0; });
+  });
+  return parsed == plog::kExitOk ? status : parsed;
+}
