@@ -28,6 +28,7 @@
 #include "core/driver.hpp"
 #include "core/exchange.hpp"
 #include "core/logger.hpp"
+#include "core/reader_progress.hpp"
 #include "protocol/constants.hpp"
 
 namespace playerkit::core {
@@ -123,6 +124,11 @@ class Device {
   // Queued devices: the kept samples published after `sequence`, oldest first
   // (at most data_queue of them; older ones are gone).
   [[nodiscard]] std::vector<std::shared_ptr<const DataSample>> data_since(std::uint64_t sequence) const;
+  // Queued devices: how far each client has taken the samples (the server
+  // reports it), for publishers that must not overrun anyone. Shared, so a
+  // publisher may wait on it without holding the device.
+  [[nodiscard]] ReaderProgress& readers() { return *readers_; }
+  [[nodiscard]] std::shared_ptr<ReaderProgress> shared_readers() { return readers_; }
 
   // --- commands (server side writes, driver side takes)
   enum class CommandStatus { kAccepted, kReadOnly, kWrongSize };
@@ -179,6 +185,8 @@ class Device {
   std::deque<Command> command_queue_;  // command-queue devices only
   std::deque<Request> requests_;
   std::vector<Reply> replies_;
+
+  const std::shared_ptr<ReaderProgress> readers_ = std::make_shared<ReaderProgress>();
 
   mutable std::mutex listeners_mutex_;  // the three below
   std::vector<DeviceListener*> listeners_;

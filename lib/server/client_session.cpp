@@ -329,6 +329,7 @@ void ClientSession::release_devices() {
     core::Device* device = context_.devices.find(state_.port, entry.device);
     const int held = SubscriptionTable::held_subscriptions(entry.access);
     if (device == nullptr || held == 0) continue;
+    if (SubscriptionTable::can_read(entry.access)) device->readers().forget(state_.id);
     // A robot whose last client vanished must not drive on with the last
     // command: stop it, as 1.5 did (1.5 stopped position:0 whichever position
     // device it was, and left the state/type bytes uninitialised).

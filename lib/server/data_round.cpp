@@ -22,11 +22,12 @@ DataRound build_data_round(ClientState& client, const core::DeviceTable& devices
   DataRound round;
   for (SubscriptionTable::Entry& entry : client.subscriptions.entries()) {
     if (!SubscriptionTable::can_read(entry.access)) continue;
-    const core::Device* device = devices.find(client.port, entry.device);
+    core::Device* device = devices.find(client.port, entry.device);
     if (device == nullptr || !device->readable()) continue;
     if (device->queues_data()) {
       // Messages, not readings: each one once, in order, whatever the mode.
-      for (const auto& sample : device->data_since(entry.last_sequence)) {
+      const auto samples = device->data_since(entry.last_sequence);
+      for (const auto& sample : samples) {
         append_message(round.bytes,
                        protocol::make_header(protocol::MessageType::kData, entry.device, now,
                                              sample->timestamp),
@@ -34,6 +35,7 @@ DataRound build_data_round(ClientState& client, const core::DeviceTable& devices
         ++round.data_messages;
         entry.last_sequence = sample->sequence;
       }
+      if (!samples.empty()) device->readers().taken(client.id, entry.last_sequence);
       continue;
     }
     const auto sample = device->latest_data();

@@ -105,6 +105,7 @@ TEST_F(DataRoundFixture, ClosedDevicesStopSending) {
   EXPECT_EQ(build_data_round(client, devices, {}).data_messages, 0u);
 }
 
+
 }  // namespace
 }  // namespace playerkit::server
 
@@ -130,6 +131,30 @@ TEST_F(DataRoundFixture, QueuedDeviceSendsEveryMessageOnceFromSubscriptionOn) {
   EXPECT_EQ(build_data_round(client, devices, {}).data_messages, 0u);
   comms.publish({4}, {4, 0});
   EXPECT_EQ(build_data_round(client, devices, {}).data_messages, 1u);
+}
+
+
+TEST_F(DataRoundFixture, QueuedDeviceLearnsHowFarEachReaderGot) {
+  core::Device& comms = devices.add(std::make_unique<core::Device>(
+      core::DeviceKey{6665, {protocol::kCommsCode, 0}},
+      core::DeviceInfo{"queued", "", Access::kAll, core::DeviceLimits{1, 8}, false},
+      std::make_unique<core::testing::CountingDriver>(counts), clock, logger));
+  comms.publish({0}, {1, 0});
+  client.id = 42;
+  client.subscriptions.request(comms.address(), 'r', &comms, client.id);
+  EXPECT_EQ(comms.readers().count(), 1u);
+  std::stop_source never;
+  // Registered at sample 1 (published before it subscribed): nothing owed yet.
+  EXPECT_TRUE(comms.readers().wait_until_taken(1, never.get_token()));
+  comms.publish({1}, {2, 0});
+  comms.publish({2}, {3, 0});
+  std::stop_source stopped;
+  stopped.request_stop();
+  EXPECT_FALSE(comms.readers().wait_until_taken(3, stopped.get_token()));  // not sent yet
+  EXPECT_EQ(build_data_round(client, devices, {}).data_messages, 2u);
+  EXPECT_TRUE(comms.readers().wait_until_taken(3, stopped.get_token()));
+  client.subscriptions.request(comms.address(), 'c', &comms, client.id);
+  EXPECT_EQ(comms.readers().count(), 0u);  // closing lets the publisher go on
 }
 
 }  // namespace

@@ -60,7 +60,7 @@ PlayerReply device_access(ClientState& client, std::span<const std::uint8_t> pay
   }
   core::Device* device = devices.find(client.port, {request.code, request.index});
   reply.access = static_cast<std::uint8_t>(
-      client.subscriptions.request({request.code, request.index}, request.access, device));
+      client.subscriptions.request({request.code, request.index}, request.access, device, client.id));
   if (device != nullptr) reply.driver_name.assign(device->info().driver_name);
   return ack(protocol::encode(reply));
 }

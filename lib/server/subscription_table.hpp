@@ -31,8 +31,10 @@ class SubscriptionTable {
   // to or unsubscribing from `device` (nullptr: no such device on the
   // client's port) as needed, and returns the access now held. A failed
   // subscription leaves the client holding nothing ('e'). Bytes other than
-  // r, w, a, c change nothing.
-  Access request(DeviceAddress address, std::uint8_t requested, core::Device* device);
+  // r, w, a, c change nothing. On a queued device `reader` is tracked in
+  // Device::readers() for as long as it can read.
+  Access request(DeviceAddress address, std::uint8_t requested, core::Device* device,
+                 core::ClientId reader = core::kNoClient);
 
   // 'e' for devices never requested.
   [[nodiscard]] Access access(DeviceAddress address) const;

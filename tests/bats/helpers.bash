@@ -16,7 +16,20 @@ battery_plugin="$build_dir/examples/plugin-driver/libplayerkit_battery_plugin.so
 start_server() {
   local log="$1"
   shift
-  "$player_serve" "$@" 2>"$log" &
+  start_daemon "$log" "$player_serve" "$@"
+}
+
+# start_replay LOGFILE ARGS...: the same for `player-log replay ARGS...`.
+start_replay() {
+  local log="$1"
+  shift
+  start_daemon "$log" "$player_log" replay "$@"
+}
+
+start_daemon() {
+  local log="$1"
+  shift
+  "$@" 2>"$log" &
   server_pid=$!
   server_port=""
   for _ in $(seq 1 100); do

@@ -10,6 +10,7 @@
 #include "log_convert.hpp"
 #include "log_info.hpp"
 #include "log_record.hpp"
+#include "log_replay.hpp"
 #include "log_tool.hpp"
 
 namespace {
@@ -30,6 +31,9 @@ Examples:
   player-log record laser:0 position:0 -o run.log --duration 60
   player-log record robot1:7000 laser -o run.log -n 100
   player-cat laser --format log | player-log record - -o run.log
+  player-log replay run.log                    serve run.log's devices on port 6665
+  player-log replay intel.log.gz -p 7000 --rate 10 --devices laser:0,position:0
+  player-log replay run.log --burst --loop     as fast as the clients read, for ever
 
 CARMEN -> Player: FLASER gives laser:0, position:0 (the odometry pose) and
 truth:0 (the laser's pose); ODOM gives position:0. Player -> CARMEN: the reverse
@@ -38,6 +42,9 @@ truth:0 (the laser's pose); ODOM gives position:0. Player -> CARMEN: the reverse
 Stdout carries data only (info, or -o -); messages go to stderr. Long runs show
 progress on stderr when it is a terminal. Malformed lines are skipped and
 counted (the first few shown as file:line:col: what), or fatal with --strict.
+Replay serves until SIGINT/SIGTERM (exit 0), also after the end of the log;
+clients get every message as long as they keep within 256 messages of the
+replay, and with --burst whatever their pace.
 Signals: SIGINT and SIGTERM stop record cleanly (every line received is written), exit 0.
 Exit status: 0 done, 1 runtime error (missing or unreadable file, malformed
 line with --strict, cannot connect, no such device), 2 usage error.)";
@@ -73,7 +80,7 @@ int guarded(Body&& body) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"player-log SUBCOMMAND ...: inspect, convert, cut and record Player and CARMEN logs."};
+  CLI::App app{"player-log SUBCOMMAND ...: inspect, convert, cut, record and replay Player and CARMEN logs."};
   app.footer(kFooter);
   app.set_version_flag("--version", std::string("player-log (playerkit) ") + PLAYERKIT_VERSION);
   app.require_subcommand(1);
@@ -120,6 +127,21 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   record->add_flag("--strict", strict, "stdin: a malformed line is an error (exit 1)");
 
+  auto* replay = app.add_subcommand("replay", "serve a log's devices to clients, as player-serve -r does, without a config");
+  plog::ReplayOptions replay_options;
+  bool replay_quiet = false;
+  replay->add_option("FILE", replay_options.input, "Player or CARMEN log (.gz too)")->required();
+  replay->add_option("-p,--port", replay_options.port, "TCP port (0: any free one)")->capture_default_str();
+  replay->add_option("--bind", replay_options.bind_address, "address to listen on")->capture_default_str();
+  replay->add_option("-r,--rate", replay_options.rate, "speed factor (2 = twice as fast as logged)")
+      ->capture_default_str();
+  replay->add_flag("-l,--loop", replay_options.loop, "start again at the end of the log");
+  replay->add_option("--start", replay_options.start, "skip the first S seconds of the log")->type_name("S");
+  replay->add_option("--duration", replay_options.duration, "serve S seconds of log (per pass)")->type_name("S");
+  replay->add_option("--devices", devices, "only these, e.g. laser:0,position:0");
+  replay->add_flag("--burst", replay_options.burst, "as fast as the clients read, never dropping a message");
+  replay->add_flag("-q,--quiet", replay_quiet, "errors only");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -152,6 +174,20 @@ int main(int argc, char** argv) {
       }
       plog::run_cut(cut_options, std::cout, std::cerr, progress);
     });
+  }
+  if (replay->parsed()) {
+    int status = plog::kExitUsage;
+    const int parsed = guarded([&] {
+      if (!devices.empty()) replay_options.devices = plog::parse_device_list(devices);
+      if (!(replay_options.rate > 0 && replay_options.rate < 1e6)) {
+        throw plog::UsageError("--rate must be above 0 and below 1000000");
+      }
+      if (replay_options.start < 0) throw plog::UsageError("--start must be 0 or more");
+      if (replay_options.duration && *replay_options.duration <= 0) throw plog::UsageError("--duration must be > 0");
+      if (replay_quiet) replay_options.log_level = playerkit::core::LogLevel::kError;
+      status = plog::run_replay(replay_options, std::cerr, progress);
+    });
+    return parsed == plog::kExitOk ? status : parsed;
   }
   int status = plog::kExitUsage;
   const int parsed = guarded([&] {

@@ -1,7 +1,9 @@
 #include "message_source.hpp"
 
 #include <stdexcept>
+#include <string>
 #include <variant>
+#include <vector>
 
 #include "log/carmen_log_reader.hpp"
 #include "log/log_conversion.hpp"
@@ -9,6 +11,10 @@
 #include "log/text_log_reader.hpp"
 
 namespace playerkit::plog {
+
+namespace {
+constexpr std::size_t kKeptUnconvertible = 10;
+}  // namespace
 
 SourceStats for_each_message(const std::filesystem::path& path, bool strict,
                              const std::function<void(const SourceMessage&)>& visit) {
@@ -31,18 +37,27 @@ SourceStats for_each_message(const std::filesystem::path& path, bool strict,
     stats.malformed_texts = reader.malformed_lines();
   } else {
     log::CarmenLogReader reader(*in, path.string(), {.strict = strict});
+    // Records CARMEN reads but Player cannot hold (a negative time, as one
+    // ODOM line of Freiburg 079 has) count as malformed, like a bad line.
+    std::size_t unconvertible = 0;
+    std::vector<std::string> unconvertible_texts;
     while (auto record = reader.next()) {
       log::PlayerMessages converted;
       try {
         converted = log::carmen_to_player(*record);
       } catch (const std::invalid_argument& e) {
-        throw log::LogParseError(path.string(), reader.line_number(), 1, e.what());
+        log::LogParseError error(path.string(), reader.line_number(), 1, e.what());
+        if (strict) throw error;
+        if (unconvertible_texts.size() < kKeptUnconvertible) unconvertible_texts.emplace_back(error.what());
+        ++unconvertible;
+        continue;
       }
       if (converted.messages.empty()) ++stats.skipped;
       for (const auto& message : converted.messages) visit({message, converted.host, 6665});
     }
-    stats.malformed = reader.malformed_lines();
+    stats.malformed = reader.malformed_lines() + unconvertible;
     stats.malformed_texts = reader.malformed_messages();
+    stats.malformed_texts.insert(stats.malformed_texts.end(), unconvertible_texts.begin(), unconvertible_texts.end());
     stats.skipped += reader.unknown_lines();
   }
   if (const auto error = in->error()) throw std::runtime_error(path.string() + ": " + *error);

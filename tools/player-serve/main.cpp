@@ -9,7 +9,7 @@
 
 #include "check_config.hpp"
 #include "core/plugin.hpp"
-#include "serve.hpp"
+#include "daemon/serve.hpp"
 
 namespace {
 
@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("player-serve (playerkit) ") + PLAYERKIT_VERSION +
                                         ", Player protocol " + PLAYERKIT_PLAYER_VERSION);
 
-  playerkit::serve::ServeOptions options;
+  playerkit::daemon::ServeOptions options;
   bool check = false;
   bool quiet = false;
   bool verbose = false;
@@ -91,7 +91,7 @@ int main(int argc, char** argv) {
     playerkit::core::Logger logger("player-serve");
     logger.set_level(playerkit::core::LogLevel::kError);
     try {
-      const auto registry = playerkit::serve::load_drivers(options.plugins, logger);
+      const auto registry = playerkit::daemon::load_drivers(options.plugins, logger);
       return playerkit::serve::check_config(
           options.config_path, options.port,
           [&registry](std::string_view driver) { return registry.contains(driver); }, std::cout,
@@ -105,5 +105,5 @@ int main(int argc, char** argv) {
   if (!key.empty()) options.auth_key = key;
   if (quiet) options.log_level = playerkit::core::LogLevel::kError;
   if (verbose) options.log_level = playerkit::core::LogLevel::kDebug;
-  return playerkit::serve::serve(options);
+  return playerkit::daemon::serve(options);
 }

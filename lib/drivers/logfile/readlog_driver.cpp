@@ -32,6 +32,7 @@ class ReplaySessions {
   std::shared_ptr<ReplaySession> get(const ReplayOptions& options, core::Logger& logger) {
     std::lock_guard lock(mutex_);
     const Key key{options.path.string(), options.speed, options.autorewind, options.start_offset};
+    // duration and burst come from the settings: the same for every device.
     if (auto existing = sessions_[key].lock()) return existing;
     // Only one reader may set the server's clock: the first one on the -r file.
     core::ManualClock* clock = nullptr;
@@ -53,6 +54,9 @@ class ReplaySessions {
   std::map<Key, std::weak_ptr<ReplaySession>> sessions_;
   bool clock_taken_ = false;
 };
+
+// Enough that a client's round carries many lines, few enough to bound memory.
+constexpr std::size_t kBurstDataQueue = 64;
 
 config::SourceLocation where_of(const config::Section& section, std::string_view option) {
   const config::Property* property = section.property(option);
@@ -82,6 +86,8 @@ ReplayOptions read_replay_options(const config::Section& section, const ReadlogS
     throw config::ConfigError(where_of(section, "start"),
                               "readlog: start must be 0 or more seconds into the log");
   }
+  options.duration = settings.duration;
+  options.burst = settings.burst;
   return options;
 }
 
@@ -98,6 +104,8 @@ core::DriverSpec readlog_driver_spec(ReadlogSettings settings) {
                      protocol::kTruthCode,      protocol::kIrCode,         protocol::kWifiCode,
                      protocol::kLocalizeCode,   protocol::kPosition3dCode};
   spec.access = protocol::Access::kRead;
+  spec.limits.data_queue = sessions->settings().data_queue;
+  if (sessions->settings().burst && spec.limits.data_queue == 0) spec.limits.data_queue = kBurstDataQueue;
   spec.factory = [sessions](const core::DriverContext& context) -> std::unique_ptr<core::Driver> {
     const ReplayOptions options = read_replay_options(context.section, sessions->settings());
     const int index = context.section.read_int("index", context.key.address.index);

@@ -47,6 +47,14 @@ struct ReadlogSettings {
   core::ManualClock* clock = nullptr;
   // Null: real time. Tests pass one they control.
   std::shared_ptr<ReplayTimer> timer;
+  // Samples each device keeps for clients that fall behind (0: the latest
+  // only, as in 1.5). `player-log replay` queues, so a client reading at its
+  // own pace still gets every scan.
+  std::size_t data_queue = 0;
+  // ReplayOptions::duration and ::burst for every device (burst needs a
+  // queue: 64 samples if data_queue is 0).
+  std::optional<double> duration;
+  bool burst = false;
 };
 
 // Without settings (no -r) a readlog device needs a `filename` option.

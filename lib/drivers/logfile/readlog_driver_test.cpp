@@ -5,6 +5,7 @@
 #include <chrono>
 #include <memory>
 #include <string>
+#include <thread>
 
 #include "config/errors.hpp"
 #include "drivers/logfile/logfile_test_support.hpp"
@@ -29,9 +30,13 @@ struct ReadlogTest : ::testing::Test {
   // Registers readlog as `player-serve -r LOG -f speed` would, with a timer
   // the test moves, then loads `config`.
   void load(const std::string& config, const std::vector<LoggedSample>& samples = kFourLines,
-            double speed = 1.0) {
+            double speed = 1.0, ReadlogSettings settings = {}) {
     testing::write_position_log(log_path, samples);
-    builtin.registry.add(readlog_driver_spec({log_path, speed, &log_clock, timer}));
+    settings.log = log_path;
+    settings.speed = speed;
+    settings.clock = &log_clock;
+    settings.timer = timer;
+    builtin.registry.add(readlog_driver_spec(std::move(settings)));
     builtin.load(config);
   }
 
@@ -205,6 +210,62 @@ TEST_F(ReadlogTest, BadSettingsAreConfigErrorsNamingThem) {
                                   "\" )\n")
                 .find("no sync or data lines"),
             std::string::npos);
+}
+
+TEST_F(ReadlogTest, DurationEndsEachPassThatManySecondsAfterItsStart) {
+  ReadlogSettings settings;
+  settings.duration = 0.5;
+  load("position:0 ( driver \"readlog\" start 0.25 autorewind 1 )\n", kFourLines, 1.0, settings);
+  ASSERT_TRUE(position(0).subscribe());
+  // The pass is 0.25 .. 0.75 s of log: only the line at 0.5 s is position:0.
+  ASSERT_TRUE(waiting_for(250ms));
+  timer->set(250ms);
+  ASSERT_TRUE(has_sequence(position(0), 1));
+  EXPECT_EQ(position(0).latest_data()->payload, position_payload(200));
+  // The line at 1.0 s is past the window: the next pass starts instead.
+  ASSERT_TRUE(waiting_for(500ms));
+  timer->set(500ms);
+  ASSERT_TRUE(waiting_for(750ms));
+  timer->set(750ms);
+  ASSERT_TRUE(has_sequence(position(0), 2));
+  EXPECT_EQ(position(0).latest_data()->payload, position_payload(200));
+  position(0).unsubscribe();
+}
+
+TEST_F(ReadlogTest, BurstGoesAsFastAsTheSlowestReaderAndDropsNothing) {
+  ReadlogSettings settings;
+  settings.burst = true;
+  settings.data_queue = 2;
+  std::vector<LoggedSample> lines;
+  for (std::uint32_t i = 0; i < 6; ++i) lines.push_back({0, {1000, i * 100000}, static_cast<int>(10 * i)});
+  load("position:0 ( driver \"readlog\" )\n", lines, 1.0, settings);
+  core::Device& device = position(0);
+  ASSERT_EQ(device.info().limits.data_queue, 2u);
+  // A reader as the server registers one: before subscribing, at sequence 0.
+  device.readers().taken(7, 0);
+  ASSERT_TRUE(device.subscribe());
+  // The first line waits for the other subscriptions of a client to come in.
+  ASSERT_TRUE(waiting_for(500ms));
+  timer->set(500ms);
+  // Then no pacing by the log, only by the reader: 2 lines fill its queue share.
+  ASSERT_TRUE(has_sequence(device, 2));
+  std::this_thread::sleep_for(30ms);
+  EXPECT_EQ(device.latest_data()->sequence, 2u);
+  device.readers().taken(7, 1);
+  ASSERT_TRUE(has_sequence(device, 3));
+  device.readers().taken(7, 3);
+  ASSERT_TRUE(has_sequence(device, 5));
+  // Every line is kept for the reader, in order.
+  const auto owed = device.data_since(3);
+  ASSERT_EQ(owed.size(), 2u);
+  EXPECT_EQ(owed[0]->payload, position_payload(30));
+  EXPECT_EQ(owed[1]->payload, position_payload(40));
+  // A reader that leaves holds nothing back (another one, far ahead, keeps
+  // the replay from pausing for want of readers).
+  device.readers().taken(8, 6);
+  device.readers().forget(7);
+  ASSERT_TRUE(has_sequence(device, 6));
+  device.unsubscribe();
 }
 
 }  // namespace

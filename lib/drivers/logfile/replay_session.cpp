@@ -115,14 +115,26 @@ bool ReplaySession::replay_file(const std::stop_token& stop, std::uint64_t& serv
       pass_start_log = log_us;
       pass_start_wall = timer_->now();
     }
+    if (options_.duration && log_us > pass_start_log &&
+        static_cast<double>(log_us - pass_start_log) > *options_.duration * 1e6) {
+      break;
+    }
     ++served;
-    // A line logged earlier than the pass start (time went back) goes at once.
-    const nanoseconds offset = log_us > pass_start_log ? scaled(log_us - pass_start_log, options_.speed)
-                                                        : nanoseconds{0};
-    if (!timer_->wait_until(pass_start_wall + offset, stop)) return false;
+    if (options_.burst) {
+      if (!settled_) {
+        if (!timer_->wait_until(pass_start_wall + options_.burst_settle, stop)) return false;
+        settled_ = true;
+      }
+      if (!wait_for_any_reader(stop)) return false;
+    } else {
+      // A line logged earlier than the pass start (time went back) goes at once.
+      const nanoseconds offset = log_us > pass_start_log ? scaled(log_us - pass_start_log, options_.speed)
+                                                          : nanoseconds{0};
+      if (!timer_->wait_until(pass_start_wall + offset, stop)) return false;
+    }
     last_log_time_ = time;
     if (clock_ != nullptr) clock_->set(time);
-    if (const auto* data = std::get_if<log::DataLine>(&*line)) deliver(*data);
+    if (const auto* data = std::get_if<log::DataLine>(&*line)) deliver(*data, stop);
   }
   if (const auto error = in->error()) logger_.error("readlog: " + options_.path.string() + ": " + *error);
   return !stop.stop_requested();
@@ -140,12 +152,43 @@ void ReplaySession::follow_clock_after_end(const std::stop_token& stop) {
   }
 }
 
-void ReplaySession::deliver(const log::DataLine& line) {
+void ReplaySession::deliver(const log::DataLine& line, const std::stop_token& stop) {
   // Interfaces the log format holds no fields for come back empty: nothing to serve.
   if (!line.device || line.message.payload.empty()) return;
-  std::lock_guard lock(targets_mutex_);
-  for (const Target& target : targets_) {
-    if (target.logged == *line.device) target.device->publish(line.message.payload, line.data_time);
+  struct Owed {
+    std::shared_ptr<core::ReaderProgress> readers;
+    std::uint64_t sequence;
+  };
+  std::vector<Owed> owed;
+  {
+    std::lock_guard lock(targets_mutex_);
+    for (const Target& target : targets_) {
+      if (target.logged != *line.device) continue;
+      target.device->publish(line.message.payload, line.data_time);
+      const std::size_t queue = target.device->info().limits.data_queue;
+      if (!options_.burst || queue == 0) continue;
+      // Room for the next line: every reader is at most queue - 1 behind.
+      const std::uint64_t sequence = target.device->latest_data()->sequence;
+      if (sequence + 1 > queue) owed.push_back({target.device->shared_readers(), sequence + 1 - queue});
+    }
+  }
+  // Outside the lock, so that a client leaving (which detaches) is not held up;
+  // a reader that leaves is forgotten before its device detaches.
+  for (const Owed& entry : owed) {
+    if (!entry.readers->wait_until_taken(entry.sequence, stop)) return;
+  }
+}
+
+bool ReplaySession::wait_for_any_reader(const std::stop_token& stop) {
+  constexpr nanoseconds kPoll = std::chrono::milliseconds(20);
+  for (;;) {
+    {
+      std::lock_guard lock(targets_mutex_);
+      for (const Target& target : targets_) {
+        if (target.device->readers().count() > 0) return true;
+      }
+    }
+    if (!timer_->wait_until(timer_->now() + kPoll, stop)) return false;
   }
 }
 

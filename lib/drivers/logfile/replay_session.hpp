@@ -15,10 +15,12 @@
 // devices detach: the log plays on like a live robot.
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <stop_token>
 #include <thread>
 #include <vector>
@@ -37,6 +39,18 @@ struct ReplayOptions {
   double speed = 1.0;        // > 0; 2 plays twice as fast
   bool autorewind = false;   // start again at the end of the file
   double start_offset = 0.0;  // seconds after the first logged line; earlier lines are skipped
+  // Seconds of log to serve per pass from the start offset; later lines are
+  // not served (with autorewind the next pass begins).
+  std::optional<double> duration;
+  // As fast as the clients read instead of at log pace: a line goes out once
+  // every client reading a queued device it feeds has room for it in its
+  // share of the device's queue, so nothing is dropped however slow a client
+  // is. Devices without a data queue, or without readers, do not hold it
+  // back; when no attached device has a reader the replay pauses. The first
+  // line waits burst_settle after the first subscription, so that a client
+  // opening several devices one after the other gets each from the start.
+  bool burst = false;
+  std::chrono::milliseconds burst_settle{500};
 };
 
 class ReplaySession {
@@ -71,7 +85,9 @@ class ReplaySession {
   // One pass over the file; false when stopped. `served` counts lines served.
   bool replay_file(const std::stop_token& stop, std::uint64_t& served);
   void follow_clock_after_end(const std::stop_token& stop);
-  void deliver(const log::DataLine& line);
+  void deliver(const log::DataLine& line, const std::stop_token& stop);
+  // Burst: false when stopped while no attached device had a reader.
+  bool wait_for_any_reader(const std::stop_token& stop);
 
   const ReplayOptions options_;
   core::ManualClock* const clock_;
@@ -80,6 +96,7 @@ class ReplaySession {
   protocol::Timestamp first_log_time_;
   protocol::Timestamp last_log_time_;
   std::atomic<std::uint64_t> malformed_lines_{0};
+  bool settled_ = false;  // burst: the first line has waited burst_settle (reader thread only)
 
   std::mutex targets_mutex_;  // held while publishing, so detach() waits for it
   std::vector<Target> targets_;

@@ -173,7 +173,10 @@ TEST_F(WritelogTest, RecordedLogReplaysEqual) {
   } collector;
   auto timer = std::make_shared<testing::ManualReplayTimer>();
   testing::BuiltinDevices replay;
-  replay.registry.add(readlog_driver_spec({log_path, 1.0, nullptr, timer}));
+  ReadlogSettings settings;
+  settings.log = log_path;
+  settings.timer = timer;
+  replay.registry.add(readlog_driver_spec(std::move(settings)));
   replay.load("position:0 ( driver \"readlog\" )\n");
   core::Device& replayed = replay.device(kPositionCode);
   replayed.add_listener(&collector);

@@ -1,6 +1,7 @@
 #pragma once
-// `player-serve CONFIG`: load drivers and the configuration, serve until a
-// signal, shut every device down.
+// The daemon: load drivers and a configuration, serve until a signal, shut
+// every device down. `player-serve CONFIG` and `player-log replay LOG` are this
+// with different options.
 
 #include <cstdint>
 #include <optional>
@@ -10,10 +11,13 @@
 #include "core/driver_registry.hpp"
 #include "core/logger.hpp"
 
-namespace playerkit::serve {
+namespace playerkit::daemon {
 
 struct ServeOptions {
+  std::string program_name = "player-serve";  // prefixes every log line
   std::string config_path;
+  // When set, the configuration itself (config_path names it in messages).
+  std::optional<std::string> config_text;
   std::uint16_t port = 6665;  // 0: any free port (printed at start-up)
   std::string bind_address = "0.0.0.0";
   std::optional<std::string> auth_key;
@@ -22,6 +26,10 @@ struct ServeOptions {
   // -r: readlog devices replay this file and the server clock follows it.
   std::optional<std::string> readlog;
   double readlog_speed = 1.0;  // -f
+  // drivers::ReadlogSettings' data_queue, duration and burst.
+  std::size_t readlog_data_queue = 0;
+  std::optional<double> readlog_duration;
+  bool readlog_burst = false;
 };
 
 // The built-in drivers plus those of the plugins. Throws core::PluginError.
@@ -32,4 +40,4 @@ core::DriverRegistry load_drivers(const std::vector<std::string>& plugins, core:
 // configuration. Diagnostics go to stderr.
 int serve(const ServeOptions& options);
 
-}  // namespace playerkit::serve
+}  // namespace playerkit::daemon

@@ -1,4 +1,4 @@
-#include "serve.hpp"
+#include "daemon/serve.hpp"
 
 #include <algorithm>
 #include <exception>
@@ -13,7 +13,7 @@
 #include "drivers/logfile/readlog_driver.hpp"
 #include "server/server.hpp"
 
-namespace playerkit::serve {
+namespace playerkit::daemon {
 
 namespace {
 
@@ -33,7 +33,7 @@ core::DriverRegistry load_drivers(const std::vector<std::string>& plugins, core:
 }
 
 int serve(const ServeOptions& options) {
-  core::Logger logger("player-serve");
+  core::Logger logger(options.program_name);
   logger.set_level(options.log_level);
   // With -r every header time the server writes is log time: the readlog
   // reader of that file sets log_clock as it replays (logfile-format.md §5).
@@ -51,7 +51,13 @@ int serve(const ServeOptions& options) {
   }
   if (options.readlog) {
     // Replaces a plugin's readlog too: -r names what the built-in one replays.
-    registry.add(drivers::readlog_driver_spec({*options.readlog, options.readlog_speed, &log_clock, nullptr}));
+    registry.add(drivers::readlog_driver_spec({.log = *options.readlog,
+                                               .speed = options.readlog_speed,
+                                               .clock = &log_clock,
+                                               .timer = nullptr,
+                                               .data_queue = options.readlog_data_queue,
+                                               .duration = options.readlog_duration,
+                                               .burst = options.readlog_burst}));
   }
 
   server::ServerOptions server_options;
@@ -69,8 +75,10 @@ int serve(const ServeOptions& options) {
       default_port = server.listen(0);
       bound.push_back(default_port);
     }
-    const auto config = config::ConfigFile::load(options.config_path,
-                                                 core::load_options_for(registry, default_port));
+    const auto load_options = core::load_options_for(registry, default_port);
+    const auto config = options.config_text
+                            ? config::ConfigFile::parse(*options.config_text, options.config_path, load_options)
+                            : config::ConfigFile::load(options.config_path, load_options);
     for (const auto& warning : config.warnings()) logger.warning(warning.to_string());
     core::instantiate_devices(config, registry, devices, clock, logger);
     for (const auto& warning : config.unused_properties()) logger.warning(warning.to_string());
@@ -120,4 +128,4 @@ int serve(const ServeOptions& options) {
   return 0;
 }
 
-}  // namespace playerkit::serve
+}  // namespace playerkit::daemon
