@@ -1,0 +1,190 @@
+#include "algorithms/amcl/amcl_filter.hpp"
+
+#include "algorithms/amcl/motion_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace playerkit::amcl {
+namespace {
+
+std::shared_ptr<const grid::OccupancyGrid> require_map(
+    std::shared_ptr<const grid::OccupancyGrid> map) {
+  if (!map || map->empty()) throw std::invalid_argument("AmclFilter: no map");
+  return map;
+}
+
+const AmclParameters& validated(const AmclParameters& parameters) {
+  validate(parameters);
+  return parameters;
+}
+
+}  // namespace
+
+AmclFilter::AmclFilter(AmclParameters parameters, std::shared_ptr<const grid::OccupancyGrid> map,
+                       std::uint64_t seed)
+    : parameters_(validated(parameters)),
+      map_(require_map(std::move(map))),
+      rng_(seed),
+      free_space_(*map_),
+      beam_model_(map_),
+      recovery_(parameters_.alpha_slow, parameters_.alpha_fast) {
+  if (free_space_.empty()) throw std::invalid_argument("AmclFilter: the map has no free cell");
+  set_global();
+}
+
+void AmclFilter::restart() {
+  recovery_.reset();
+  have_odometry_reference_ = false;
+  laser_update_pending_ = true;
+  refresh_hypotheses();
+}
+
+void AmclFilter::set_pose(const geometry::Pose2& mean, const Eigen::Matrix3d& covariance) {
+  sample_gaussian(mean, covariance, parameters_.max_particles, rng_, particles_);
+  restart();
+}
+
+void AmclFilter::set_global() {
+  sample_uniform(free_space_, parameters_.max_particles, rng_, particles_);
+  restart();
+}
+
+void AmclFilter::set_parameters(const AmclParameters& parameters) {
+  validate(parameters);
+  if (parameters.likelihood_max_distance != parameters_.likelihood_max_distance) {
+    likelihood_field_.reset();
+  }
+  parameters_ = parameters;
+  recovery_.set_rates(parameters_.alpha_slow, parameters_.alpha_fast);
+  refresh_hypotheses();
+}
+
+LikelihoodFieldModel& AmclFilter::likelihood_field() {
+  if (!likelihood_field_) {
+    likelihood_field_ =
+        std::make_unique<LikelihoodFieldModel>(*map_, parameters_.likelihood_max_distance);
+  }
+  return *likelihood_field_;
+}
+
+bool AmclFilter::update(const geometry::Pose2& odometry, const LaserScan* scan) {
+  if (!have_odometry_reference_) {
+    have_odometry_reference_ = true;
+    particle_odometry_ = laser_odometry_ = odometry;
+    if (scan == nullptr) return false;
+    laser_update(*scan);
+    return true;
+  }
+  const auto moved_since = [&](const geometry::Pose2& reference) {
+    return std::hypot(odometry.x - reference.x, odometry.y - reference.y) >
+               parameters_.update_min_distance ||
+           std::abs(geometry::angle_difference(odometry.yaw, reference.yaw)) >
+               parameters_.update_min_angle;
+  };
+  if (scan != nullptr && (laser_update_pending_ || moved_since(laser_odometry_))) {
+    move_particles(odometry);
+    laser_update(*scan);
+    laser_odometry_ = odometry;
+    return true;
+  }
+  if (scan == nullptr && moved_since(particle_odometry_)) {
+    move_particles(odometry);
+    refresh_hypotheses();
+  }
+  return false;
+}
+
+void AmclFilter::move_particles(const geometry::Pose2& odometry) {
+  apply_motion(parameters_.motion_model, particles_, particle_odometry_, odometry,
+               MotionNoise::from(parameters_), rng_);
+  particle_odometry_ = odometry;
+}
+
+void AmclFilter::laser_update(const LaserScan& scan) {
+  laser_update_pending_ = false;
+  ++update_count_;
+  prepare_beams(scan, parameters_.laser_max_beams, beams_);
+  const LaserModelSettings settings = LaserModelSettings::from(parameters_);
+  log_likelihoods_.resize(particles_.size());
+  std::size_t informative_beams = beams_.size();
+  if (parameters_.laser_model == LaserModelType::beam) {
+    beam_model_.log_likelihoods(particles_, beams_, settings, log_likelihoods_);
+  } else {
+    informative_beams = static_cast<std::size_t>(
+        std::count(beams_.no_return.begin(), beams_.no_return.end(), 0));
+    likelihood_field().log_likelihoods(particles_, beams_, settings, log_likelihoods_);
+  }
+
+  if (informative_beams > 0 && !particles_.empty()) {
+    normalize_weights(particles_);
+    // The scan's likelihood under the current belief, sum_i w_i p(z | x_i),
+    // from the untempered model and taken per beam (a geometric mean) so the
+    // recovery averages do not swing by orders of magnitude with the beam
+    // count or one odd scan.
+    const double highest = *std::max_element(log_likelihoods_.begin(), log_likelihoods_.end());
+    double expected = 0.0;
+    for (std::size_t i = 0; i < particles_.size(); ++i) {
+      expected += particles_[i].weight * std::exp(log_likelihoods_[i] - highest);
+    }
+    recovery_.observe((highest + std::log(expected)) / static_cast<double>(informative_beams));
+
+    const double exponent = parameters_.scan_likelihood_exponent;
+    for (std::size_t i = 0; i < particles_.size(); ++i) {
+      particles_[i].weight *= std::exp(exponent * (log_likelihoods_[i] - highest));
+    }
+    normalize_weights(particles_);
+  }
+
+  const bool due =
+      parameters_.selective_resampling
+          ? effective_sample_size(particles_) < 0.5 * static_cast<double>(particles_.size())
+          : update_count_ % parameters_.resample_interval == 0;
+  if (due) resample();
+  refresh_hypotheses();
+}
+
+void AmclFilter::resample() {
+  ResampleSettings settings;
+  settings.min_particles = parameters_.min_particles;
+  settings.max_particles = parameters_.max_particles;
+  settings.kld_error = parameters_.kld_error;
+  settings.kld_z = parameters_.kld_z;
+  settings.bin_cell_size = parameters_.cluster_cell_size;
+  settings.bin_angle_size = parameters_.cluster_angle_size;
+  settings.injection_probability = recovery_.injection_probability();
+  resampler_.resample(particles_, settings, &free_space_, rng_);
+}
+
+void AmclFilter::refresh_hypotheses() {
+  clusterer_.cluster(particles_, parameters_.cluster_cell_size, parameters_.cluster_angle_size,
+                     clusters_);
+}
+
+std::vector<Hypothesis> AmclFilter::hypotheses() const {
+  const std::size_t count = std::min(clusters_.size(), parameters_.max_hypotheses);
+  std::vector<Hypothesis> result(clusters_.begin(),
+                                 clusters_.begin() + static_cast<std::ptrdiff_t>(count));
+  double total = 0.0;
+  for (const Hypothesis& h : result) total += h.weight;
+  for (Hypothesis& h : result) {
+    h.weight = total > 0.0 ? h.weight / total : 1.0 / static_cast<double>(result.size());
+  }
+  return result;
+}
+
+Hypothesis AmclFilter::best() const {
+  const std::vector<Hypothesis> all = hypotheses();
+  return all.empty() ? Hypothesis{} : all.front();
+}
+
+Hypothesis AmclFilter::predict(const geometry::Pose2& odometry) const {
+  Hypothesis estimate = best();
+  if (have_odometry_reference_) {
+    estimate.mean = estimate.mean.compose(particle_odometry_.between(odometry));
+  }
+  return estimate;
+}
+
+}  // namespace playerkit::amcl

@@ -1,0 +1,100 @@
+#pragma once
+// Adaptive Monte-Carlo localization (Fox 2001; Probabilistic Robotics ch. 8):
+// a particle filter over the robot's pose in a known occupancy map, moved by
+// odometry, weighted by laser scans, resampled with KLD-sampling for an
+// adaptive particle count, with augmented MCL's random particles for
+// recovery from a wrong or lost estimate. Deterministic for a given seed
+// and input sequence.
+
+#include "algorithms/amcl/amcl_parameters.hpp"
+#include "algorithms/amcl/augmented_recovery.hpp"
+#include "algorithms/amcl/beam_model.hpp"
+#include "algorithms/amcl/laser_scan.hpp"
+#include "algorithms/amcl/likelihood_field_model.hpp"
+#include "algorithms/amcl/particle_set.hpp"
+#include "algorithms/amcl/pose_estimate.hpp"
+#include "algorithms/geometry/pose2.hpp"
+#include "algorithms/grid/occupancy_grid.hpp"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <memory>
+#include <random>
+#include <span>
+#include <vector>
+
+namespace playerkit::amcl {
+
+class AmclFilter {
+ public:
+  // Starts with max_particles spread uniformly over the map's free cells
+  // (set_global()). Throws std::invalid_argument for invalid parameters or
+  // a map without free cells.
+  AmclFilter(AmclParameters parameters, std::shared_ptr<const grid::OccupancyGrid> map,
+             std::uint64_t seed);
+
+  // max_particles drawn from N(mean, covariance) over (x, y, yaw).
+  void set_pose(const geometry::Pose2& mean, const Eigen::Matrix3d& covariance);
+  // max_particles uniform over free cells with uniform yaw.
+  void set_global();
+
+  // Feed odometry (robot pose in the odometry frame) and optionally the scan
+  // taken at that pose. The first call (and the first after set_pose or
+  // set_global) only records the odometry origin — no motion — though it
+  // runs a laser update if it carries a scan. Later calls run motion, laser
+  // update and (every resample_interval updates, or on an effective sample
+  // size drop) resampling once the robot has moved more than
+  // update_min_distance or turned more than update_min_angle since the last
+  // laser update. Without a scan, motion past those thresholds is still
+  // applied, so odometry does not pile up. Returns true when a laser update
+  // ran.
+  bool update(const geometry::Pose2& odometry, const LaserScan* scan);
+
+  // Clusters heaviest first, at most max_hypotheses; weights sum to 1.
+  std::vector<Hypothesis> hypotheses() const;
+  Hypothesis best() const;
+  // best() carried forward by the odometry delta from where the particles
+  // last moved to `odometry` (for publishing "now" while scans queue up).
+  Hypothesis predict(const geometry::Pose2& odometry) const;
+
+  std::span<const Particle> particles() const { return particles_; }
+  const AmclParameters& parameters() const { return parameters_; }
+  // Takes effect from the next update (Player 1.5's live set config).
+  void set_parameters(const AmclParameters& parameters);
+  // Laser updates run so far.
+  std::size_t update_count() const { return update_count_; }
+  // 1 - w_fast / w_slow as of the last laser update (0 when recovery is off).
+  double injection_probability() const { return recovery_.injection_probability(); }
+
+ private:
+  void move_particles(const geometry::Pose2& odometry);
+  void laser_update(const LaserScan& scan);
+  void resample();
+  void refresh_hypotheses();
+  LikelihoodFieldModel& likelihood_field();
+  void restart();
+
+  AmclParameters parameters_;
+  std::shared_ptr<const grid::OccupancyGrid> map_;
+  std::mt19937_64 rng_;
+  FreeSpaceSampler free_space_;
+  BeamModel beam_model_;
+  std::unique_ptr<LikelihoodFieldModel> likelihood_field_;  // built on first use
+  AugmentedRecovery recovery_;
+  AdaptiveResampler resampler_;
+  PoseClusterer clusterer_;
+
+  std::vector<Particle> particles_;
+  std::vector<double> log_likelihoods_;
+  PreparedBeams beams_;
+  std::vector<Hypothesis> clusters_;  // every cluster, heaviest first
+
+  bool have_odometry_reference_ = false;
+  bool laser_update_pending_ = true;  // the next scan updates regardless of motion
+  geometry::Pose2 particle_odometry_;  // odometry the particles were last moved to
+  geometry::Pose2 laser_odometry_;     // odometry at the last laser update
+  std::size_t update_count_ = 0;
+};
+
+}  // namespace playerkit::amcl

@@ -1,0 +1,334 @@
+#include "algorithms/amcl/amcl_filter.hpp"
+
+#include "algorithms/amcl/synthetic_room_test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <numbers>
+#include <random>
+
+namespace playerkit::amcl {
+namespace {
+constexpr double pi = std::numbers::pi;
+
+// A robot driving waypoint to waypoint through the test room (turning in
+// place, then driving straight), with wheel odometry that drifts: every step's
+// distance and turn are misread by a few percent and a little heading slips.
+class SimulatedRobot {
+ public:
+  SimulatedRobot(const geometry::Pose2& start, std::uint64_t seed) : truth_(start), rng_(seed) {}
+
+  const geometry::Pose2& truth() const { return truth_; }
+  const geometry::Pose2& odometry() const { return odometry_; }
+  void teleport(const geometry::Pose2& pose) { truth_ = pose; }
+
+  // One step of at most 5 cm or 0.1 rad towards `goal`; false once there.
+  bool step_towards(const Eigen::Vector2d& goal) {
+    const Eigen::Vector2d to_goal = goal - truth_.translation();
+    if (to_goal.norm() < 1e-9) return false;
+    const double turn = geometry::angle_difference(std::atan2(to_goal.y(), to_goal.x()), truth_.yaw);
+    geometry::Pose2 delta;
+    if (std::abs(turn) > 1e-9) {
+      delta.yaw = std::clamp(turn, -0.1, 0.1);
+    } else {
+      delta.x = std::min(0.05, to_goal.norm());
+    }
+    move(delta);
+    return true;
+  }
+
+  void move(const geometry::Pose2& delta) {
+    truth_ = truth_.compose(delta);
+    std::normal_distribution<double> gain(1.0, 0.03), slip(0.0, 0.002);
+    const geometry::Pose2 measured{delta.x * gain(rng_), delta.y * gain(rng_),
+                                   delta.yaw * gain(rng_) + slip(rng_)};
+    odometry_ = odometry_.compose(measured);
+  }
+
+  LaserScan scan(const grid::OccupancyGrid& map) {
+    test::LaserSpec spec;
+    spec.max_range = 12.0;
+    return test::simulate_scan(map, truth_, spec, 0.02, &rng_);
+  }
+
+ private:
+  geometry::Pose2 truth_;
+  geometry::Pose2 odometry_{10.0, -3.0, 1.0};  // an odometry frame unrelated to the map's
+  std::mt19937_64 rng_;
+};
+
+// A loop around the room, clear of the box and the pillar.
+const std::vector<Eigen::Vector2d> loop{{8.5, 1.0}, {8.5, 5.0}, {3.5, 5.0}, {3.5, 3.0},
+                                        {1.0, 3.0}, {1.0, 1.0}};
+
+double distance(const geometry::Pose2& a, const geometry::Pose2& b) {
+  return std::hypot(a.x - b.x, a.y - b.y);
+}
+
+struct RunStatistics {
+  std::size_t laser_updates = 0;
+  double worst_error = 0.0;
+};
+
+// Drives the loop, feeding every step's odometry and scan to the filter;
+// `after_update` sees each laser update.
+template <typename AfterUpdate>
+void drive(AmclFilter& filter, SimulatedRobot& robot, const grid::OccupancyGrid& map,
+           const std::vector<Eigen::Vector2d>& waypoints, AfterUpdate after_update) {
+  for (const Eigen::Vector2d& goal : waypoints) {
+    while (robot.step_towards(goal)) {
+      const LaserScan scan = robot.scan(map);
+      if (filter.update(robot.odometry(), &scan)) after_update();
+    }
+  }
+}
+
+TEST(AmclFilter, TracksALoopWithinTenCentimetres) {
+  const auto map = test::make_room();
+  SimulatedRobot robot({1.0, 1.0, 0.0}, 11);
+  AmclFilter filter(AmclParameters{}, map, 42);
+  filter.set_pose({1.05, 0.95, 0.05}, Eigen::Vector3d(0.01, 0.01, 0.005).asDiagonal());
+  RunStatistics stats;
+  drive(filter, robot, *map, loop, [&] {
+    ++stats.laser_updates;
+    if (stats.laser_updates < 3) return;  // let the first scans pull it in
+    const Hypothesis best = filter.best();
+    stats.worst_error = std::max(stats.worst_error, distance(best.mean, robot.truth()));
+    EXPECT_LT(std::abs(geometry::angle_difference(best.mean.yaw, robot.truth().yaw)), 0.05);
+  });
+  EXPECT_GT(stats.laser_updates, 60u);  // ~25 m and 6 turns at 0.2 m / 30 deg
+  EXPECT_LT(stats.worst_error, 0.1);
+  EXPECT_EQ(filter.update_count(), stats.laser_updates);
+}
+
+TEST(AmclFilter, TracksWithTheBeamModelToo) {
+  const auto map = test::make_room();
+  SimulatedRobot robot({1.0, 1.0, 0.0}, 12);
+  AmclParameters parameters;
+  parameters.laser_model = LaserModelType::beam;
+  parameters.max_particles = 1000;
+  AmclFilter filter(parameters, map, 43);
+  filter.set_pose({1.0, 1.0, 0.0}, Eigen::Vector3d(0.01, 0.01, 0.005).asDiagonal());
+  double worst = 0.0;
+  std::size_t updates = 0;
+  drive(filter, robot, *map, {{8.5, 1.0}, {8.5, 5.0}}, [&] {
+    if (++updates < 3) return;
+    worst = std::max(worst, distance(filter.best().mean, robot.truth()));
+  });
+  EXPECT_GT(updates, 30u);
+  EXPECT_LT(worst, 0.1);
+}
+
+TEST(AmclFilter, GlobalLocalizationConvergesInTheAsymmetricRoom) {
+  const auto map = test::make_room();
+  SimulatedRobot robot({4.5, 3.5, -0.5}, 13);
+  AmclFilter filter(AmclParameters{}, map, 44);  // starts global
+  EXPECT_EQ(filter.particles().size(), 5000u);
+  std::size_t updates = 0;
+  std::size_t first_good_update = 0;
+  drive(filter, robot, *map, {{8.5, 1.0}, {8.5, 5.0}, {3.5, 5.0}}, [&] {
+    ++updates;
+    const bool good = distance(filter.best().mean, robot.truth()) < 0.1;
+    if (good && first_good_update == 0) first_good_update = updates;
+    if (!good) first_good_update = 0;
+  });
+  EXPECT_GT(first_good_update, 0u);
+  EXPECT_LT(first_good_update, 20u);
+  const Hypothesis best = filter.predict(robot.odometry());
+  EXPECT_LT(distance(best.mean, robot.truth()), 0.1);
+  EXPECT_LT(std::abs(geometry::angle_difference(best.mean.yaw, robot.truth().yaw)), 0.05);
+  EXPECT_GT(best.weight, 0.9);
+}
+
+TEST(AmclFilter, KldAdaptsTheParticleCount) {
+  const auto map = test::make_room();
+  AmclFilter filter(AmclParameters{}, map, 46);  // starts global
+  // Scans without a single return carry no information: the belief stays
+  // spread over the room and KLD keeps every particle.
+  LaserScan blind = test::simulate_scan(*map, {5, 3, 0});
+  for (double& range : blind.ranges) range = blind.max_range;
+  ASSERT_TRUE(filter.update({0, 0, 0}, &blind));
+  ASSERT_TRUE(filter.update({0.3, 0, 0}, &blind));  // second update resamples
+  EXPECT_EQ(filter.particles().size(), 5000u);
+
+  // Tracking a known pose, it keeps a small fraction of that.
+  SimulatedRobot robot({1.0, 1.0, 0.0}, 16);
+  filter.set_pose({1.0, 1.0, 0.0}, Eigen::Vector3d(0.01, 0.01, 0.005).asDiagonal());
+  std::size_t most = 0;
+  std::size_t updates = 0;
+  drive(filter, robot, *map, {{8.5, 1.0}}, [&] {
+    if (++updates > 4) most = std::max(most, filter.particles().size());
+  });
+  EXPECT_GT(updates, 20u);
+  EXPECT_LT(most, 1500u);
+}
+
+TEST(AmclFilter, AugmentedMclRecoversFromAKidnap) {
+  const auto map = test::make_room();
+  SimulatedRobot robot({1.0, 1.0, 0.0}, 14);
+  AmclFilter filter(AmclParameters{}, map, 45);
+  filter.set_pose({1.0, 1.0, 0.0}, Eigen::Vector3d(0.01, 0.01, 0.005).asDiagonal());
+  drive(filter, robot, *map, {{8.5, 1.0}, {8.5, 3.5}}, [] {});
+  ASSERT_LT(distance(filter.predict(robot.odometry()).mean, robot.truth()), 0.1);
+
+  // Picked up and put down elsewhere; odometry knows nothing of it.
+  robot.teleport({4.0, 4.0, pi});
+  std::size_t updates_until_recovered = 0;
+  std::size_t updates = 0;
+  const std::vector<Eigen::Vector2d> route{{1.0, 3.0}, {1.0, 1.0}, {8.5, 1.0}, {8.5, 5.0}};
+  drive(filter, robot, *map, route, [&] {
+    ++updates;
+    const bool on_truth = distance(filter.best().mean, robot.truth()) < 0.2;
+    if (on_truth && updates_until_recovered == 0) updates_until_recovered = updates;
+    if (!on_truth) updates_until_recovered = 0;  // must stay recovered
+  });
+  EXPECT_GT(updates_until_recovered, 0u) << "never recovered";
+  EXPECT_LE(updates_until_recovered, 60u);
+}
+
+TEST(AmclFilter, WithoutRecoveryAKidnapIsNotNoticed) {
+  // The control for the test above: alpha 0, 0 (Player 1.5's behaviour).
+  const auto map = test::make_room();
+  SimulatedRobot robot({1.0, 1.0, 0.0}, 14);
+  AmclParameters parameters;
+  parameters.alpha_slow = parameters.alpha_fast = 0.0;
+  AmclFilter filter(parameters, map, 45);
+  filter.set_pose({1.0, 1.0, 0.0}, Eigen::Vector3d(0.01, 0.01, 0.005).asDiagonal());
+  drive(filter, robot, *map, {{8.5, 1.0}, {8.5, 3.5}}, [] {});
+  robot.teleport({4.0, 4.0, pi});
+  drive(filter, robot, *map, {{1.0, 3.0}, {1.0, 1.0}}, [] {});
+  EXPECT_GT(distance(filter.predict(robot.odometry()).mean, robot.truth()), 1.0);
+  EXPECT_EQ(filter.injection_probability(), 0.0);
+}
+
+std::vector<Particle> run_short(std::uint64_t filter_seed) {
+  const auto map = test::make_room();
+  SimulatedRobot robot({4.5, 3.5, -0.5}, 15);
+  AmclFilter filter(AmclParameters{}, map, filter_seed);
+  drive(filter, robot, *map, {{8.5, 1.0}}, [] {});
+  return {filter.particles().begin(), filter.particles().end()};
+}
+
+bool bit_identical(const std::vector<Particle>& a, const std::vector<Particle>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const double x[4] = {a[i].pose.x, a[i].pose.y, a[i].pose.yaw, a[i].weight};
+    const double y[4] = {b[i].pose.x, b[i].pose.y, b[i].pose.yaw, b[i].weight};
+    if (std::memcmp(x, y, sizeof x) != 0) return false;
+  }
+  return true;
+}
+
+TEST(AmclFilter, SameSeedAndInputsGiveBitIdenticalParticles) {
+  const auto first = run_short(7);
+  EXPECT_TRUE(bit_identical(first, run_short(7)));
+  EXPECT_FALSE(bit_identical(first, run_short(8)));
+}
+
+LaserScan room_scan(const grid::OccupancyGrid& map, const geometry::Pose2& pose) {
+  return test::simulate_scan(map, pose);
+}
+
+TEST(AmclFilter, UpdatesOnlyAfterMovingPastTheThresholds) {
+  const auto map = test::make_room();
+  AmclFilter filter(AmclParameters{}, map, 1);
+  filter.set_pose({3, 3, 0}, Eigen::Vector3d(0.01, 0.01, 0.01).asDiagonal());
+  const LaserScan scan = room_scan(*map, {3, 3, 0});
+  EXPECT_FALSE(filter.update({0, 0, 0}, nullptr));  // records the origin
+  EXPECT_TRUE(filter.update({0, 0, 0}, &scan));     // first scan after set_pose
+  EXPECT_FALSE(filter.update({0.1, 0, 0}, &scan));
+  EXPECT_FALSE(filter.update({0.19, 0, 0.5}, &scan));
+  EXPECT_TRUE(filter.update({0.21, 0, 0}, &scan));   // 0.21 m
+  EXPECT_FALSE(filter.update({0.21, 0, 0.5}, &scan));
+  EXPECT_TRUE(filter.update({0.21, 0, 0.53}, &scan));  // 30.4 degrees
+  EXPECT_EQ(filter.update_count(), 3u);
+}
+
+TEST(AmclFilter, FirstCallWithAScanUpdatesWithoutMotion) {
+  const auto map = test::make_room();
+  AmclFilter filter(AmclParameters{}, map, 2);
+  filter.set_pose({3, 3, 0}, Eigen::Vector3d(0.04, 0.04, 0.01).asDiagonal());
+  const LaserScan scan = room_scan(*map, {3, 3, 0});
+  EXPECT_TRUE(filter.update({5, 5, 1}, &scan));
+  const Hypothesis best = filter.best();
+  EXPECT_LT(distance(best.mean, {3, 3, 0}), 0.1);
+}
+
+TEST(AmclFilter, PredictCarriesTheEstimateForwardByOdometry) {
+  const auto map = test::make_room();
+  AmclParameters parameters;
+  AmclFilter filter(parameters, map, 3);
+  filter.set_pose({3, 3, pi / 2}, Eigen::Matrix3d::Identity() * 1e-6);
+  filter.update({10, 10, 0}, nullptr);
+  const Hypothesis now = filter.predict({10.1, 10, 0.05});  // under the thresholds
+  const Hypothesis best = filter.best();
+  const geometry::Pose2 expected = best.mean.compose({0.1, 0.0, 0.05});
+  EXPECT_NEAR(now.mean.x, expected.x, 1e-12);
+  EXPECT_NEAR(now.mean.y, expected.y, 1e-12);
+  EXPECT_NEAR(now.mean.yaw, expected.yaw, 1e-12);
+}
+
+TEST(AmclFilter, HypothesesAreSortedCappedAndNormalised) {
+  // Globally localizing from one spot: after two scans several places of
+  // the room still fit.
+  const auto map = test::make_room();
+  AmclParameters parameters;
+  parameters.max_hypotheses = 2;
+  AmclFilter filter(parameters, map, 4);
+  const LaserScan scan = room_scan(*map, {5.0, 3.0, 0.0});
+  filter.update({0, 0, 0}, &scan);
+  filter.update({0, 0, 0.6}, &scan);
+  const auto hypotheses = filter.hypotheses();
+  ASSERT_EQ(hypotheses.size(), 2u);
+  double total = 0.0;
+  for (std::size_t i = 0; i < hypotheses.size(); ++i) {
+    total += hypotheses[i].weight;
+    if (i > 0) {
+      EXPECT_GE(hypotheses[i - 1].weight, hypotheses[i].weight);
+    }
+  }
+  EXPECT_NEAR(total, 1.0, 1e-12);
+  EXPECT_EQ(filter.best().mean, hypotheses.front().mean);
+}
+
+TEST(AmclFilter, SelectiveResamplingKeepsWeightsUntilTheyDegenerate) {
+  const auto map = test::make_room();
+  AmclParameters parameters;
+  parameters.selective_resampling = true;
+  AmclFilter filter(parameters, map, 5);
+  filter.set_pose({3, 3, 0}, Eigen::Vector3d(0.01, 0.01, 0.01).asDiagonal());
+  const LaserScan scan = room_scan(*map, {3, 3, 0});
+  filter.update({0, 0, 0}, &scan);
+  // The first scan sharpens the spread-out weights: resampled to fewer
+  // particles of equal weight.
+  EXPECT_LT(filter.particles().size(), 5000u);
+  const double first = filter.particles().front().weight;
+  for (const Particle& p : filter.particles()) EXPECT_EQ(p.weight, first);
+}
+
+TEST(AmclFilter, LiveParameterChangesApply) {
+  const auto map = test::make_room();
+  AmclFilter filter(AmclParameters{}, map, 6);
+  AmclParameters changed = filter.parameters();
+  changed.max_particles = 500;
+  changed.likelihood_max_distance = 1.0;
+  filter.set_parameters(changed);
+  EXPECT_EQ(filter.parameters().max_particles, 500u);
+  filter.set_global();
+  EXPECT_EQ(filter.particles().size(), 500u);
+  changed.min_particles = 1000;
+  EXPECT_THROW(filter.set_parameters(changed), std::invalid_argument);
+  EXPECT_EQ(filter.parameters().min_particles, 100u);
+}
+
+TEST(AmclFilter, RejectsAMapWithoutFreeSpace) {
+  auto solid = std::make_shared<grid::OccupancyGrid>(10, 10, 0.1, Eigen::Vector2d::Zero(),
+                                                     grid::CellState::occupied);
+  EXPECT_THROW(AmclFilter(AmclParameters{}, solid, 1), std::invalid_argument);
+  EXPECT_THROW(AmclFilter(AmclParameters{}, nullptr, 1), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace playerkit::amcl

@@ -1,0 +1,52 @@
+#include "algorithms/amcl/amcl_parameters.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace playerkit::amcl {
+namespace {
+
+void require(bool condition, const char* message) {
+  if (!condition) throw std::invalid_argument(std::string("amcl parameters: ") + message);
+}
+
+bool is_probability(double value) { return std::isfinite(value) && value >= 0.0 && value <= 1.0; }
+bool is_non_negative(double value) { return std::isfinite(value) && value >= 0.0; }
+bool is_positive(double value) { return std::isfinite(value) && value > 0.0; }
+
+}  // namespace
+
+void validate(const AmclParameters& p) {
+  require(p.min_particles >= 1, "min_particles must be at least 1");
+  require(p.min_particles <= p.max_particles, "min_particles exceeds max_particles");
+  require(p.kld_error > 0.0 && p.kld_error < 1.0, "kld_error must lie in (0, 1)");
+  require(is_non_negative(p.kld_z), "kld_z must be non-negative");
+  require(is_probability(p.alpha_slow) && is_probability(p.alpha_fast),
+          "alpha_slow and alpha_fast must lie in [0, 1]");
+  require(p.alpha_slow <= p.alpha_fast, "alpha_slow must not exceed alpha_fast");
+  require(is_non_negative(p.rotation_noise_from_rotation) &&
+              is_non_negative(p.rotation_noise_from_translation) &&
+              is_non_negative(p.translation_noise_from_translation) &&
+              is_non_negative(p.translation_noise_from_rotation) &&
+              is_non_negative(p.strafe_noise_from_translation),
+          "motion noise coefficients must be non-negative");
+  require(p.laser_max_beams >= 1, "laser_max_beams must be at least 1");
+  require(is_non_negative(p.z_hit) && is_non_negative(p.z_short) && is_non_negative(p.z_max) &&
+              is_non_negative(p.z_rand),
+          "z_hit, z_short, z_max and z_rand must be non-negative");
+  require(p.z_hit + p.z_short + p.z_max + p.z_rand > 0.0, "the z_* mixture weights are all zero");
+  require(is_positive(p.sigma_hit), "sigma_hit must be positive");
+  require(is_positive(p.lambda_short), "lambda_short must be positive");
+  require(is_positive(p.likelihood_max_distance), "likelihood_max_distance must be positive");
+  require(is_positive(p.scan_likelihood_exponent) && p.scan_likelihood_exponent <= 1.0,
+          "scan_likelihood_exponent must lie in (0, 1]");
+  require(is_non_negative(p.update_min_distance) && is_non_negative(p.update_min_angle),
+          "update thresholds must be non-negative");
+  require(p.resample_interval >= 1, "resample_interval must be at least 1");
+  require(is_positive(p.cluster_cell_size) && is_positive(p.cluster_angle_size),
+          "cluster bin sizes must be positive");
+  require(p.max_hypotheses >= 1, "max_hypotheses must be at least 1");
+}
+
+}  // namespace playerkit::amcl

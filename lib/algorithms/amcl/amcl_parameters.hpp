@@ -1,0 +1,83 @@
+#pragma once
+// Every tunable of the Monte-Carlo localization filter. Names say what they
+// do; each comment gives Player 1.5's configuration name (or ROS amcl's, for
+// what 1.5 lacked) so old configuration files translate one to one.
+
+#include <cstddef>
+#include <numbers>
+
+namespace playerkit::amcl {
+
+enum class LaserModelType { beam, likelihood_field };
+enum class MotionModelType { differential, omni };
+
+struct AmclParameters {
+  // --- particle count (KLD-sampling, Fox 2001) ---
+  std::size_t min_particles = 100;   // 1.5: pf_min_samples (100)
+  std::size_t max_particles = 5000;  // 1.5: pf_max_samples (10000 in 1.5; ROS's 5000 here)
+  double kld_error = 0.01;           // 1.5: pf_err (0.01)
+  double kld_z = 3.0;                // 1.5: pf_z (3), upper standard normal quantile
+
+  // --- recovery by augmented MCL (Probabilistic Robotics table 8.3) ---
+  // Decay rates of the slow and fast averages of the measurement likelihood;
+  // 0 and 0 disable random-particle injection. ROS: recovery_alpha_slow/fast.
+  double alpha_slow = 0.001;
+  double alpha_fast = 0.1;
+
+  // --- motion model (Probabilistic Robotics table 5.6) ---
+  // Each is a variance coefficient: e.g. the translation's standard deviation
+  // is sqrt(translation_noise_from_translation * d^2 + ...), applied once per
+  // filter update (every ~0.2 m). ROS uses 0.2 for all five; that gives a
+  // 0.2 m step 13 degrees of heading noise and a 30 degree turn 12 cm of
+  // position noise, which spreads the particles on every turn for no gain.
+  // These defaults still allow ~45% error on a turn and ~30% on a distance,
+  // ample for uncalibrated wheel odometry, but only ~5 degrees of heading
+  // and ~5 cm of position per 0.2 m step or 30 degree turn from the cross
+  // terms.
+  MotionModelType motion_model = MotionModelType::differential;  // ROS: odom_model_type
+  double rotation_noise_from_rotation = 0.2;         // alpha1, ROS: odom_alpha1 (rad^2/rad^2)
+  double rotation_noise_from_translation = 0.02;     // alpha2, ROS: odom_alpha2 (rad^2/m^2)
+  double translation_noise_from_translation = 0.1;   // alpha3, ROS: odom_alpha3 (m^2/m^2)
+  double translation_noise_from_rotation = 0.01;     // alpha4, ROS: odom_alpha4 (m^2/rad^2)
+  double strafe_noise_from_translation = 0.1;        // alpha5, ROS: odom_alpha5 (omni only)
+
+  // --- laser model (Probabilistic Robotics ch. 6) ---
+  LaserModelType laser_model = LaserModelType::likelihood_field;  // ROS: laser_model_type
+  std::size_t laser_max_beams = 30;  // 1.5: laser_max_samples (5 in 1.5); ROS: laser_max_beams
+  double z_hit = 0.95;               // ROS: laser_z_hit
+  double z_short = 0.1;              // ROS: laser_z_short (beam model only)
+  double z_max = 0.05;               // ROS: laser_z_max (beam model only)
+  double z_rand = 0.05;              // ROS: laser_z_rand
+  double sigma_hit = 0.2;            // ROS: laser_sigma_hit (m)
+  double lambda_short = 0.1;         // ROS: laser_lambda_short (1/m)
+  double likelihood_max_distance = 2.0;  // ROS: laser_likelihood_max_dist (m)
+  // A scan weighs a particle by p(scan | pose)^scan_likelihood_exponent.
+  // The models multiply beams as if independent; neighbouring beams are not
+  // (one wall, one map error), so the plain product is overconfident: from a
+  // global start one scan leaves a handful of particles, and tracking turns
+  // brittle. An exponent below 1 counts the scan as fewer independent beams
+  // (Probabilistic Robotics 6.3.4 suggests exactly this kind of damping).
+  // 1 gives the textbook product. Not in 1.5 or ROS (ROS sums cubes instead).
+  double scan_likelihood_exponent = 0.2;
+
+  // --- when to update (1.5: update_thresh [0.2 m, 30 deg]; not in the manual's table) ---
+  double update_min_distance = 0.2;  // m; ROS: update_min_d
+  double update_min_angle = std::numbers::pi / 6.0;  // rad; ROS: update_min_a
+
+  // --- resampling ---
+  std::size_t resample_interval = 2;  // resample every N laser updates; ROS: resample_interval
+  // Resample only when the effective sample size falls below half the
+  // particle count (Doucet); overrides resample_interval when on.
+  bool selective_resampling = false;  // ROS (nav2): selective_resampling
+
+  // --- pose estimate (clustering, also the KLD histogram's bins) ---
+  double cluster_cell_size = 0.5;                             // m
+  double cluster_angle_size = 10.0 * std::numbers::pi / 180;  // rad
+  std::size_t max_hypotheses = 10;  // the localize interface carries at most 10
+};
+
+// Throws std::invalid_argument naming the first parameter that makes no sense
+// (e.g. min_particles > max_particles, a non-positive bin size).
+void validate(const AmclParameters& parameters);
+
+}  // namespace playerkit::amcl

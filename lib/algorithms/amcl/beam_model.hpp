@@ -1,0 +1,39 @@
+#pragma once
+// The beam laser model (Probabilistic Robotics table 6.1, as in Player
+// 1.5's amcl): for each beam the range a perfect sensor would read is ray
+// cast through the map from the particle's pose, and the reading z against
+// that expected range z* is scored by a mixture of
+//   hit   z_hit   N(z - z*; sigma_hit)          measurement noise
+//   short z_short lambda exp(-lambda z), z < z*  unexpected obstacles
+//   max   z_max   when z is a no-return reading   missed returns
+//   rand  z_rand  / max_range, z < max_range     everything else
+// A no-return reading thus scores high where the map has nothing within
+// range and only z_max (not a miss) where it has.
+
+#include "algorithms/amcl/laser_model_settings.hpp"
+#include "algorithms/amcl/laser_scan.hpp"
+#include "algorithms/amcl/particle_set.hpp"
+#include "algorithms/grid/occupancy_grid.hpp"
+
+#include <memory>
+#include <span>
+
+namespace playerkit::amcl {
+
+class BeamModel {
+ public:
+  explicit BeamModel(std::shared_ptr<const grid::OccupancyGrid> map);
+
+  void log_likelihoods(std::span<const Particle> particles, const PreparedBeams& beams,
+                       const LaserModelSettings& settings, std::span<double> out) const;
+
+  // log p of reading `range` (no_return: a max-range reading) when the map
+  // predicts `expected`.
+  static double log_beam_likelihood(double range, bool no_return, double expected,
+                                    double max_range, const LaserModelSettings& settings);
+
+ private:
+  std::shared_ptr<const grid::OccupancyGrid> map_;
+};
+
+}  // namespace playerkit::amcl

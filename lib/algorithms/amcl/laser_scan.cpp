@@ -1,0 +1,60 @@
+#include "algorithms/amcl/laser_scan.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace playerkit::amcl {
+namespace {
+
+bool usable(const LaserScan& scan, std::size_t i) {
+  const double range = scan.ranges[i];
+  return std::isfinite(scan.bearings[i]) && !std::isnan(range) && range >= scan.min_range;
+}
+
+}  // namespace
+
+void prepare_beams(const LaserScan& scan, std::size_t max_beams, PreparedBeams& out) {
+  if (scan.ranges.size() != scan.bearings.size()) {
+    throw std::invalid_argument("LaserScan: ranges and bearings differ in size");
+  }
+  out.max_range = scan.max_range;
+  out.sensor_pose = scan.sensor_pose;
+  out.ranges.clear();
+  out.robot_angle.clear();
+  out.cos_angle.clear();
+  out.sin_angle.clear();
+  out.end_x.clear();
+  out.end_y.clear();
+  out.no_return.clear();
+
+  // Spread the kept beams over the usable readings, so invalid readings do
+  // not eat into the budget.
+  std::size_t usable_count = 0;
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) usable_count += usable(scan, i) ? 1 : 0;
+  if (usable_count == 0 || max_beams == 0) return;
+  const std::size_t kept = std::min(max_beams, usable_count);
+  const double step =
+      kept > 1 ? static_cast<double>(usable_count - 1) / static_cast<double>(kept - 1) : 0.0;
+
+  std::size_t usable_index = 0;
+  std::size_t next_kept = 0;
+  for (std::size_t i = 0; i < scan.ranges.size() && next_kept < kept; ++i) {
+    if (!usable(scan, i)) continue;
+    const auto wanted = static_cast<std::size_t>(std::lround(static_cast<double>(next_kept) * step));
+    if (usable_index++ != wanted) continue;
+    ++next_kept;
+    const bool no_return = scan.ranges[i] >= scan.max_range;
+    const double range = no_return ? scan.max_range : scan.ranges[i];
+    const double angle = scan.sensor_pose.yaw + scan.bearings[i];
+    const double c = std::cos(angle), s = std::sin(angle);
+    out.ranges.push_back(range);
+    out.robot_angle.push_back(angle);
+    out.cos_angle.push_back(c);
+    out.sin_angle.push_back(s);
+    out.end_x.push_back(scan.sensor_pose.x + range * c);
+    out.end_y.push_back(scan.sensor_pose.y + range * s);
+    out.no_return.push_back(no_return ? 1 : 0);
+  }
+}
+
+}  // namespace playerkit::amcl

@@ -1,0 +1,89 @@
+#include "algorithms/amcl/likelihood_field_model.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace playerkit::amcl {
+
+LikelihoodFieldModel::LikelihoodFieldModel(const grid::OccupancyGrid& map, double max_distance)
+    : width_(map.width()),
+      height_(map.height()),
+      resolution_(map.resolution()),
+      origin_(map.origin()),
+      distances_(map, max_distance) {}
+
+double LikelihoodFieldModel::log_endpoint_likelihood(double distance, double max_range,
+                                                     const LaserModelSettings& settings) {
+  const double sigma = settings.sigma_hit;
+  const double hit = std::exp(-0.5 * distance * distance / (sigma * sigma)) /
+                     (std::sqrt(2.0 * std::numbers::pi) * sigma);
+  const double p = settings.z_hit * hit + settings.z_rand / max_range;
+  // A zero z_rand and a far endpoint would give log 0; floor it so one
+  // stray beam cannot veto a particle outright.
+  return std::log(std::max(p, 1e-300));
+}
+
+void LikelihoodFieldModel::refresh_table(const LaserModelSettings& settings, double max_range) {
+  if (table_valid_ && settings == table_settings_ && max_range == table_max_range_) return;
+  log_table_.resize(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
+  for (int row = 0; row < height_; ++row) {
+    for (int col = 0; col < width_; ++col) {
+      log_table_[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
+                 static_cast<std::size_t>(col)] =
+          static_cast<float>(log_endpoint_likelihood(distances_.at(col, row), max_range, settings));
+    }
+  }
+  log_outside_ =
+      static_cast<float>(log_endpoint_likelihood(distances_.max_distance(), max_range, settings));
+  table_settings_ = settings;
+  table_max_range_ = max_range;
+  table_valid_ = true;
+}
+
+void LikelihoodFieldModel::log_likelihoods(std::span<const Particle> particles,
+                                           const PreparedBeams& beams,
+                                           const LaserModelSettings& settings,
+                                           std::span<double> out) {
+  if (out.size() != particles.size()) {
+    throw std::invalid_argument("LikelihoodFieldModel: output size differs from particle count");
+  }
+  if (!(beams.max_range > 0.0)) throw std::invalid_argument("LikelihoodFieldModel: max_range <= 0");
+  refresh_table(settings, beams.max_range);
+
+  hit_x_.clear();
+  hit_y_.clear();
+  for (std::size_t b = 0; b < beams.size(); ++b) {
+    if (beams.no_return[b]) continue;
+    hit_x_.push_back(beams.end_x[b]);
+    hit_y_.push_back(beams.end_y[b]);
+  }
+  const std::size_t hits = hit_x_.size();
+  const double inverse_resolution = 1.0 / resolution_;
+  const double* hx = hit_x_.data();
+  const double* hy = hit_y_.data();
+  const float* table = log_table_.data();
+
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const geometry::Pose2& pose = particles[i].pose;
+    const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
+    // Cell coordinates of the particle, so each endpoint is one rotation away.
+    const double base_col = (pose.x - origin_.x()) * inverse_resolution;
+    const double base_row = (pose.y - origin_.y()) * inverse_resolution;
+    const double cr = c * inverse_resolution, sr = s * inverse_resolution;
+    double sum = 0.0;
+    for (std::size_t b = 0; b < hits; ++b) {
+      const int col = static_cast<int>(std::floor(base_col + cr * hx[b] - sr * hy[b]));
+      const int row = static_cast<int>(std::floor(base_row + sr * hx[b] + cr * hy[b]));
+      if (col < 0 || row < 0 || col >= width_ || row >= height_) {
+        sum += log_outside_;
+      } else {
+        sum += table[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
+                     static_cast<std::size_t>(col)];
+      }
+    }
+    out[i] = sum;
+  }
+}
+
+}  // namespace playerkit::amcl

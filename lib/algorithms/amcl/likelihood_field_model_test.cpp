@@ -1,0 +1,109 @@
+#include "algorithms/amcl/likelihood_field_model.hpp"
+
+#include "algorithms/amcl/laser_model_test_support.hpp"
+#include "algorithms/amcl/synthetic_room_test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace playerkit::amcl {
+namespace {
+
+std::vector<double> scores(LikelihoodFieldModel& model, const std::vector<Particle>& particles,
+                           const LaserScan& scan, std::size_t max_beams = 30) {
+  PreparedBeams beams;
+  prepare_beams(scan, max_beams, beams);
+  std::vector<double> out(particles.size());
+  model.log_likelihoods(particles, beams, LaserModelSettings{}, out);
+  return out;
+}
+
+TEST(LikelihoodFieldModel, EndpointLikelihoodIsTheHitGaussianPlusRandom) {
+  const LaserModelSettings s;
+  const double peak = 0.95 / (std::sqrt(2 * std::numbers::pi) * 0.2);
+  EXPECT_NEAR(LikelihoodFieldModel::log_endpoint_likelihood(0.0, 8.0, s),
+              std::log(peak + 0.05 / 8.0), 1e-12);
+  EXPECT_NEAR(LikelihoodFieldModel::log_endpoint_likelihood(0.2, 8.0, s),
+              std::log(peak * std::exp(-0.5) + 0.05 / 8.0), 1e-12);
+  EXPECT_NEAR(LikelihoodFieldModel::log_endpoint_likelihood(5.0, 8.0, s), std::log(0.05 / 8.0),
+              1e-9);
+}
+
+TEST(LikelihoodFieldModel, TruePoseBeatsPosesOffByThirtyCentimetresOrTenDegrees) {
+  const auto map = test::make_room();
+  LikelihoodFieldModel model(*map, 2.0);
+  for (const geometry::Pose2& truth :
+       {test::true_pose, geometry::Pose2{8.0, 4.5, -2.5}, geometry::Pose2{4.0, 1.0, 3.1}}) {
+    const auto particles = test::true_and_offset_poses(truth);
+    const auto s = scores(model, particles, test::simulate_scan(*map, truth));
+    for (std::size_t i = 1; i < s.size(); ++i) {
+      // By a clear margin: at least 3 nats (a factor of 20).
+      EXPECT_GT(s[0] - s[i], 3.0) << "offset pose " << i;
+    }
+  }
+}
+
+TEST(LikelihoodFieldModel, ScoreAtTheTruePoseIsNearThePeak) {
+  // A noise-free scan's endpoints lie on walls, within half a cell (plus the
+  // ray caster's own cell rounding) of an occupied cell's centre.
+  const auto map = test::make_room();
+  LikelihoodFieldModel model(*map, 2.0);
+  const std::vector<Particle> truth{{test::true_pose, 1.0}};
+  const auto s = scores(model, truth, test::simulate_scan(*map, test::true_pose));
+  const double peak = LikelihoodFieldModel::log_endpoint_likelihood(0.0, 8.0, LaserModelSettings{});
+  EXPECT_GT(s[0], 30 * (peak - 0.1));
+  EXPECT_LE(s[0], 30 * peak + 1e-9);
+}
+
+TEST(LikelihoodFieldModel, NoReturnReadingsNeitherRewardNorPenalise) {
+  const auto map = test::make_room();
+  LikelihoodFieldModel model(*map, 2.0);
+  const auto particles = test::true_and_offset_poses();
+  LaserScan scan = test::simulate_scan(*map, test::true_pose);
+  const auto before = scores(model, particles, scan, 1000);
+
+  // Every reading "no return": the scan carries no evidence at all.
+  LaserScan blind = scan;
+  for (double& r : blind.ranges) r = blind.max_range;
+  for (double s : scores(model, particles, blind, 1000)) EXPECT_EQ(s, 0.0);
+
+  // Appending no-return readings in any direction changes nothing.
+  LaserScan padded = scan;
+  for (int i = 0; i < 20; ++i) {
+    padded.ranges.push_back(padded.max_range + 1.0);
+    padded.bearings.push_back(0.3 * i);
+  }
+  const auto after = scores(model, particles, padded, 1000);
+  for (std::size_t i = 0; i < particles.size(); ++i) EXPECT_DOUBLE_EQ(before[i], after[i]);
+}
+
+TEST(LikelihoodFieldModel, EndpointsOffTheMapScoreAsFarFromAnything) {
+  const auto map = test::make_room();
+  LikelihoodFieldModel model(*map, 2.0);
+  LaserScan scan;
+  scan.ranges = {5.0};
+  scan.bearings = {0.0};
+  const std::vector<Particle> outside{{{-20.0, -20.0, 0.0}, 1.0}};
+  const auto s = scores(model, outside, scan);
+  EXPECT_NEAR(s[0], LikelihoodFieldModel::log_endpoint_likelihood(2.0, 8.0, LaserModelSettings{}),
+              1e-6);
+}
+
+TEST(LikelihoodFieldModel, SensorOffsetIsApplied) {
+  // The same world endpoints seen by a laser mounted 0.5 m forward: the
+  // robot pose 0.5 m behind the true sensor scores like the true pose.
+  const auto map = test::make_room();
+  LikelihoodFieldModel model(*map, 2.0);
+  test::LaserSpec spec;
+  spec.sensor_pose = {0.5, 0.0, 0.0};
+  const geometry::Pose2 robot{3.0, 3.0, 0.0};
+  const LaserScan scan = test::simulate_scan(*map, robot, spec);
+  const std::vector<Particle> particles{{robot, 1.0}, {{3.5, 3.0, 0.0}, 1.0}};
+  const auto s = scores(model, particles, scan);
+  EXPECT_GT(s[0] - s[1], 3.0);
+}
+
+}  // namespace
+}  // namespace playerkit::amcl

@@ -1,0 +1,54 @@
+#pragma once
+// The pose estimate: particles are grouped into clusters — connected groups
+// of occupied histogram bins (bins touching in x, y or yaw, yaw wrapping
+// around the circle) — and each cluster gives one hypothesis: its weight,
+// its weighted mean and covariance. Yaw is averaged on the circle (the
+// direction of the summed unit vectors) and its spread is measured by
+// wrapped differences from that mean, so a cluster straddling +-pi has a
+// mean near pi, not 0.
+
+#include "algorithms/amcl/particle_set.hpp"
+#include "algorithms/amcl/pose_bins.hpp"
+#include "algorithms/geometry/pose2.hpp"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <span>
+#include <vector>
+
+namespace playerkit::amcl {
+
+struct Hypothesis {
+  geometry::Pose2 mean;
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  // over (x, y, yaw)
+  double weight = 0.0;
+};
+
+// The weighted mean and covariance of a set of particles (one cluster).
+Hypothesis weighted_estimate(std::span<const Particle> particles);
+
+class PoseClusterer {
+ public:
+  // Hypotheses, heaviest first; weights are fractions of the set's total
+  // weight (they sum to 1 over all clusters). Reuses its buffers.
+  void cluster(std::span<const Particle> particles, double cell_size, double angle_size,
+               std::vector<Hypothesis>& out);
+
+ private:
+  std::uint32_t find_root(std::uint32_t bin);
+
+  struct Accumulator {
+    double weight = 0.0, x = 0.0, y = 0.0, cos_yaw = 0.0, sin_yaw = 0.0;
+    Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  };
+
+  BinTable bins_;
+  std::vector<PoseBin> bin_coordinates_;
+  std::vector<std::uint32_t> parent_;
+  std::vector<std::uint32_t> particle_bin_;
+  std::vector<std::uint32_t> cluster_of_root_;
+  std::vector<Accumulator> accumulators_;
+};
+
+}  // namespace playerkit::amcl

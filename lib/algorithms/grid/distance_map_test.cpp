@@ -1,0 +1,118 @@
+#include "algorithms/grid/distance_map.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace playerkit::grid {
+namespace {
+
+// The definition, O(cells x obstacles).
+double brute_force_distance(const OccupancyGrid& grid, int col, int row, double max_distance) {
+  double best_squared = std::numeric_limits<double>::infinity();
+  for (int r = 0; r < grid.height(); ++r) {
+    for (int c = 0; c < grid.width(); ++c) {
+      if (grid.at(c, r) != CellState::occupied) continue;
+      const double dc = c - col, dr = r - row;
+      best_squared = std::min(best_squared, dc * dc + dr * dr);
+    }
+  }
+  return std::min(std::sqrt(best_squared) * grid.resolution(), max_distance);
+}
+
+// Distances are stored as float; exact means "the float nearest the true value".
+double as_stored(double distance) { return static_cast<double>(static_cast<float>(distance)); }
+
+OccupancyGrid random_grid(int width, int height, double occupied_fraction, unsigned seed) {
+  std::mt19937 random(seed);
+  std::bernoulli_distribution occupied(occupied_fraction);
+  std::uniform_int_distribution<int> other(0, 1);
+  OccupancyGrid grid(width, height, 0.1, {-1.0, 2.0});
+  for (int row = 0; row < height; ++row) {
+    for (int col = 0; col < width; ++col) {
+      grid.set(col, row,
+               occupied(random) ? CellState::occupied
+                                : (other(random) ? CellState::free : CellState::unknown));
+    }
+  }
+  return grid;
+}
+
+TEST(DistanceMap, MatchesBruteForceOnRandomGrids) {
+  struct Case {
+    int width, height;
+    double fraction;
+  };
+  const Case cases[] = {{37, 23, 0.02}, {23, 37, 0.1}, {50, 50, 0.005}, {1, 40, 0.05},
+                        {40, 1, 0.05},  {64, 17, 0.3}};
+  unsigned seed = 1;
+  for (const Case& c : cases) {
+    const OccupancyGrid grid = random_grid(c.width, c.height, c.fraction, seed++);
+    const double max_distance = 100.0;  // far above any distance here: no capping
+    const DistanceMap map(grid, max_distance);
+    ASSERT_EQ(map.width(), c.width);
+    ASSERT_EQ(map.height(), c.height);
+    for (int row = 0; row < c.height; ++row) {
+      for (int col = 0; col < c.width; ++col) {
+        EXPECT_EQ(map.at(col, row), as_stored(brute_force_distance(grid, col, row, max_distance)))
+            << c.width << "x" << c.height << " at " << col << "," << row;
+      }
+    }
+  }
+}
+
+TEST(DistanceMap, CapsAtMaxDistance) {
+  const OccupancyGrid grid = random_grid(60, 45, 0.003, 99);
+  const double max_distance = 0.75;  // 7.5 cells
+  const DistanceMap map(grid, max_distance);
+  int capped = 0;
+  for (int row = 0; row < grid.height(); ++row) {
+    for (int col = 0; col < grid.width(); ++col) {
+      const double expected = brute_force_distance(grid, col, row, max_distance);
+      EXPECT_EQ(map.at(col, row), as_stored(expected));
+      EXPECT_LE(map.at(col, row), max_distance);
+      capped += expected == max_distance;
+    }
+  }
+  EXPECT_GT(capped, 100);  // the cap was actually exercised
+}
+
+TEST(DistanceMap, SingleObstacleGivesEuclideanDistances) {
+  OccupancyGrid grid(30, 20, 0.05, {0, 0}, CellState::free);
+  grid.set(4, 7, CellState::occupied);
+  const DistanceMap map(grid, 10.0);
+  EXPECT_DOUBLE_EQ(map.at(4, 7), 0.0);
+  EXPECT_NEAR(map.at(7, 11), 0.25, 1e-6);  // a 3-4-5 triangle
+  EXPECT_NEAR(map.at(29, 19), std::hypot(25, 12) * 0.05, 1e-6);
+}
+
+TEST(DistanceMap, EmptyMapIsMaxDistanceEverywhere) {
+  const OccupancyGrid grid(15, 9, 0.1, {0, 0}, CellState::free);
+  const DistanceMap map(grid, 2.0);
+  for (int row = 0; row < 9; ++row) {
+    for (int col = 0; col < 15; ++col) EXPECT_DOUBLE_EQ(map.at(col, row), 2.0);
+  }
+  const DistanceMap from_nothing(OccupancyGrid{}, 3.0);
+  EXPECT_DOUBLE_EQ(from_nothing.at_world({0, 0}), 3.0);
+}
+
+TEST(DistanceMap, AtWorldLooksUpTheCellAndIsMaxOutside) {
+  OccupancyGrid grid(10, 10, 0.5, {-2.5, -2.5}, CellState::free);
+  grid.set(5, 5, CellState::occupied);  // spans [0, 0.5) x [0, 0.5)
+  const DistanceMap map(grid, 4.0);
+  EXPECT_DOUBLE_EQ(map.at_world({0.25, 0.25}), 0.0);
+  EXPECT_NEAR(map.at_world({1.2, 0.1}), 1.0, 1e-6);      // cell (7, 5)
+  EXPECT_NEAR(map.at_world({-0.3, -0.3}), std::sqrt(0.5), 1e-6);  // cell (4, 4)
+  EXPECT_DOUBLE_EQ(map.at_world({2.6, 0.0}), 4.0);
+  EXPECT_DOUBLE_EQ(map.at_world({0.0, -2.51}), 4.0);
+}
+
+TEST(DistanceMap, RejectsNegativeMaxDistance) {
+  EXPECT_THROW(DistanceMap(OccupancyGrid(2, 2, 1.0, {0, 0}), -1.0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace playerkit::grid

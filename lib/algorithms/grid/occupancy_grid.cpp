@@ -1,0 +1,46 @@
+#include "algorithms/grid/occupancy_grid.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace playerkit::grid {
+
+OccupancyGrid::OccupancyGrid(int width, int height, double resolution, Eigen::Vector2d origin,
+                             CellState fill)
+    : width_(width), height_(height), resolution_(resolution), origin_(origin) {
+  if (width <= 0 || height <= 0) {
+    throw std::invalid_argument("OccupancyGrid: width and height must be positive");
+  }
+  if (!(resolution > 0.0) || !std::isfinite(resolution)) {
+    throw std::invalid_argument("OccupancyGrid: resolution must be positive and finite");
+  }
+  cells_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), fill);
+}
+
+OccupancyGrid OccupancyGrid::centred(int width, int height, double resolution, CellState fill) {
+  const Eigen::Vector2d half_extent(0.5 * width * resolution, 0.5 * height * resolution);
+  return OccupancyGrid(width, height, resolution, -half_extent, fill);
+}
+
+CellState OccupancyGrid::state_at_world(const Eigen::Vector2d& point) const {
+  const Eigen::Vector2i cell = world_to_cell(point);
+  return contains(cell) ? at(cell) : CellState::unknown;
+}
+
+Eigen::Vector2i OccupancyGrid::world_to_cell(const Eigen::Vector2d& point) const {
+  // Clamp before converting: a far-away or non-finite point must not overflow int.
+  auto to_index = [](double cells) {
+    constexpr double limit = 1.0e9;
+    if (!(cells > -limit)) return static_cast<int>(-limit);
+    if (!(cells < limit)) return static_cast<int>(limit);
+    return static_cast<int>(std::floor(cells));
+  };
+  const Eigen::Vector2d cells = (point - origin_) / resolution_;
+  return {to_index(cells.x()), to_index(cells.y())};
+}
+
+Eigen::Vector2d OccupancyGrid::cell_centre(const Eigen::Vector2i& cell) const {
+  return origin_ + (cell.cast<double>() + Eigen::Vector2d::Constant(0.5)) * resolution_;
+}
+
+}  // namespace playerkit::grid

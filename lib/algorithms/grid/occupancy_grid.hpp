@@ -1,0 +1,69 @@
+#pragma once
+// A 2-D occupancy grid in world coordinates. Row-major, row 0 at the lowest
+// y (the ROS convention); image loaders flip rows, since images start at the
+// top. Cell states use Player's map convention: -1 free, 0 unknown, +1
+// occupied.
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace playerkit::grid {
+
+enum class CellState : std::int8_t { free = -1, unknown = 0, occupied = 1 };
+
+class OccupancyGrid {
+ public:
+  OccupancyGrid() = default;
+  // `origin` is the world position of the outer corner of cell (0, 0), the
+  // corner with the lowest x and y. Throws std::invalid_argument for a
+  // non-positive size or resolution.
+  OccupancyGrid(int width, int height, double resolution, Eigen::Vector2d origin,
+                CellState fill = CellState::unknown);
+
+  // Player 1.5 places the map's centre at the world origin (manual 7.3).
+  static OccupancyGrid centred(int width, int height, double resolution,
+                               CellState fill = CellState::unknown);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  double resolution() const { return resolution_; }
+  const Eigen::Vector2d& origin() const { return origin_; }
+  bool empty() const { return cells_.empty(); }
+
+  bool contains(int col, int row) const {
+    return col >= 0 && row >= 0 && col < width_ && row < height_;
+  }
+  bool contains(const Eigen::Vector2i& cell) const { return contains(cell.x(), cell.y()); }
+
+  // Unchecked access; call contains() first for untrusted indices.
+  CellState at(int col, int row) const { return cells_[index(col, row)]; }
+  CellState at(const Eigen::Vector2i& cell) const { return at(cell.x(), cell.y()); }
+  void set(int col, int row, CellState state) { cells_[index(col, row)] = state; }
+
+  // Cells outside the grid read as unknown.
+  CellState state_at_world(const Eigen::Vector2d& point) const;
+
+  // The cell holding a world point (floor), which may lie outside the grid.
+  Eigen::Vector2i world_to_cell(const Eigen::Vector2d& point) const;
+  Eigen::Vector2d cell_centre(const Eigen::Vector2i& cell) const;
+
+  std::span<const CellState> cells() const { return cells_; }
+  std::span<CellState> cells() { return cells_; }
+
+  std::size_t index(int col, int row) const {
+    return static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
+           static_cast<std::size_t>(col);
+  }
+
+ private:
+  int width_ = 0;
+  int height_ = 0;
+  double resolution_ = 0.0;
+  Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();
+  std::vector<CellState> cells_;
+};
+
+}  // namespace playerkit::grid

@@ -1,0 +1,119 @@
+#include "localization/trajectory.hpp"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace playerkit::localization {
+namespace {
+
+std::string_view trimmed(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return {};
+  const auto last = text.find_last_not_of(" \t\r");
+  return text.substr(first, last - first + 1);
+}
+
+std::vector<std::string_view> split_csv(std::string_view line) {
+  std::vector<std::string_view> fields;
+  while (true) {
+    const auto comma = line.find(',');
+    fields.push_back(trimmed(line.substr(0, comma)));
+    if (comma == std::string_view::npos) break;
+    line.remove_prefix(comma + 1);
+  }
+  return fields;
+}
+
+std::optional<double> finite_number(std::string_view text) {
+  if (text.size() > 1 && text.front() == '+') text.remove_prefix(1);
+  double value = 0;
+  const auto parsed = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || parsed.ec != std::errc{} || parsed.ptr != text.data() + text.size() ||
+      !std::isfinite(value)) {
+    return std::nullopt;
+  }
+  return value;
+}
+
+constexpr std::array<std::string_view, 4> kColumns{"time", "x", "y", "yaw"};
+
+}  // namespace
+
+Trajectory read_trajectory_csv(std::istream& in, std::string_view name) {
+  const auto fail = [&](int line, const std::string& message) -> std::runtime_error {
+    return std::runtime_error(std::string(name) + ":" + std::to_string(line) + ": " + message);
+  };
+  Trajectory trajectory;
+  std::optional<std::array<std::size_t, 4>> column_of;  // time, x, y, yaw
+  std::size_t needed_fields = 0;
+  std::string line;
+  int number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    const auto content = trimmed(line);
+    if (content.empty() || content.front() == '#') continue;
+    const auto fields = split_csv(content);
+    if (!column_of) {
+      std::array<std::size_t, 4> found{};
+      for (std::size_t c = 0; c < kColumns.size(); ++c) {
+        std::size_t at = 0;
+        while (at < fields.size() && fields[at] != kColumns[c]) ++at;
+        if (at == fields.size()) {
+          throw fail(number, std::string("the header has no column '") + std::string(kColumns[c]) +
+                                 "' (it needs time, x, y, yaw)");
+        }
+        found[c] = at;
+        needed_fields = std::max(needed_fields, at + 1);
+      }
+      column_of = found;
+      continue;
+    }
+    if (fields.size() < needed_fields) {
+      throw fail(number, std::to_string(fields.size()) + " fields, the header needs " + std::to_string(needed_fields));
+    }
+    std::array<double, 4> values{};
+    for (std::size_t c = 0; c < kColumns.size(); ++c) {
+      const auto value = finite_number(fields[(*column_of)[c]]);
+      if (!value) {
+        throw fail(number, std::string("column '") + std::string(kColumns[c]) + "': '" +
+                               std::string(fields[(*column_of)[c]]) + "' is not a number");
+      }
+      values[c] = *value;
+    }
+    trajectory.push_back({values[0], {values[1], values[2], values[3]}});
+  }
+  if (!column_of) throw std::runtime_error(std::string(name) + ": no header line (time,x,y,yaw)");
+  return trajectory;
+}
+
+Trajectory read_trajectory_csv(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open " + path.string());
+  return read_trajectory_csv(in, path.string());
+}
+
+void write_trajectory_csv(std::ostream& out, const Trajectory& trajectory) {
+  out << "time,x,y,yaw\n";
+  char row[160];
+  for (const auto& entry : trajectory) {
+    std::snprintf(row, sizeof row, "%.9f,%.9f,%.9f,%.9f\n", entry.time, entry.pose.x, entry.pose.y, entry.pose.yaw);
+    out << row;
+  }
+}
+
+Trajectory truth_from_log(const std::filesystem::path& log, LoggedScanReaderOptions options) {
+  LoggedScanReader reader(log, options);
+  Trajectory truth;
+  while (auto scan = reader.next()) {
+    if (scan->truth) truth.push_back({scan->time, *scan->truth});
+  }
+  return truth;
+}
+
+}  // namespace playerkit::localization

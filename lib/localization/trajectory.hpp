@@ -1,0 +1,42 @@
+#pragma once
+// Timed 2-D poses: what a localizer estimates and what it is judged against.
+//
+//   auto estimate = localization::read_trajectory_csv("estimate.csv");
+//   auto truth = localization::truth_from_log("intel-corrected.log.gz");
+//
+// CSV: a header line naming at least the columns time, x, y, yaw (any order;
+// other columns are ignored), then one row per pose: s, m, m, rad. Blank lines
+// and lines starting with '#' are skipped.
+
+#include <filesystem>
+#include <istream>
+#include <ostream>
+#include <string_view>
+#include <vector>
+
+#include "algorithms/geometry/pose2.hpp"
+#include "localization/logged_scan_reader.hpp"
+
+namespace playerkit::localization {
+
+struct TimedPose {
+  double time = 0;  // s
+  geometry::Pose2 pose;
+};
+
+using Trajectory = std::vector<TimedPose>;
+
+// Throws std::runtime_error "name:line: message" for a missing header column,
+// a row with too few fields or a field that is not a finite number.
+Trajectory read_trajectory_csv(std::istream& in, std::string_view name);
+// The same from a file (plain text); throws std::runtime_error when unreadable.
+Trajectory read_trajectory_csv(const std::filesystem::path& path);
+
+// "time,x,y,yaw" and one row per pose (9 decimals: nanoseconds, nanometres).
+void write_trajectory_csv(std::ostream& out, const Trajectory& trajectory);
+
+// The true poses of a log's scans, at the scans' times (scans without truth
+// are left out). Throws what LoggedScanReader throws.
+Trajectory truth_from_log(const std::filesystem::path& log, LoggedScanReaderOptions options = {});
+
+}  // namespace playerkit::localization

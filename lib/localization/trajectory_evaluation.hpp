@@ -1,0 +1,63 @@
+#pragma once
+// How far an estimated trajectory is from the truth: absolute trajectory error
+// (no alignment: the estimate is in the map frame the truth is in), and when
+// the estimate converged.
+//
+//   auto result = localization::evaluate_trajectory(estimate, truth, {});
+//   std::cout << result.to_json() << '\n';
+//
+// Matching: each estimate is compared with the truth at its own time: a truth
+// pose within time_tolerance, else the interpolation of the truth poses just
+// before and after it when they are at most max_time_gap apart (position
+// linear, heading along the shorter arc); otherwise it is unmatched.
+// Convergence: the first matched estimate from which position error <=
+// converged_position_m and heading error <= converged_heading_rad hold for at
+// least convergence_hold_s (or to the end of the estimate). "Lost" after it
+// counts the times the error leaves those bounds again.
+
+#include <cstddef>
+#include <numbers>
+#include <optional>
+#include <string>
+
+#include "localization/trajectory.hpp"
+
+namespace playerkit::localization {
+
+struct EvaluationOptions {
+  double time_tolerance_s = 1e-3;
+  double max_time_gap_s = 1.0;
+  double converged_position_m = 0.3;
+  double converged_heading_rad = 10.0 * std::numbers::pi / 180.0;
+  double convergence_hold_s = 5.0;
+};
+
+struct ErrorStatistics {
+  std::size_t count = 0;
+  double position_rmse_m = 0;
+  double position_max_m = 0;
+  double heading_rmse_rad = 0;
+  double heading_max_rad = 0;
+};
+
+struct TrajectoryEvaluation {
+  std::size_t estimates = 0;
+  std::size_t matched = 0;
+  ErrorStatistics all;                 // every matched estimate
+  ErrorStatistics after_convergence;   // from the convergence estimate on (empty if none)
+  std::optional<double> convergence_time_s;      // since the first estimate
+  std::optional<double> convergence_distance_m;  // truth path from the first matched estimate
+  std::size_t lost_episodes = 0;                 // times the error left the bounds after convergence
+  std::size_t rows_outside_after_convergence = 0;
+  EvaluationOptions options;
+
+  bool converged() const { return convergence_time_s.has_value(); }
+  // One JSON object (field names as above, null when not converged).
+  std::string to_json(int indent = 2) const;
+};
+
+// The truth need not be sorted; the estimate is taken in its order (by time).
+TrajectoryEvaluation evaluate_trajectory(const Trajectory& estimate, const Trajectory& truth,
+                                         const EvaluationOptions& options = {});
+
+}  // namespace playerkit::localization

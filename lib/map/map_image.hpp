@@ -1,0 +1,40 @@
+#pragma once
+// Internal: 8-bit grey images and their meaning as occupancy, both ways.
+// Only map_image.cpp touches OpenCV.
+
+#include "algorithms/grid/occupancy_grid.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+namespace playerkit::map {
+
+struct GreyImage {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> pixels;  // row-major, row 0 at the TOP, as in the file
+};
+
+// Any format imgcodecs reads; colour is converted to grey and deeper images
+// to 8 bits. nullopt if the file cannot be read as an image.
+std::optional<GreyImage> read_grey_image(const std::filesystem::path& file);
+
+// Binary PGM (P5). Returns false if the file cannot be written.
+bool write_pgm(const GreyImage& image, const std::filesystem::path& file);
+
+struct PixelMeaning {
+  bool negate = false;             // occupancy = v/255 instead of (255 - v)/255
+  double occupied_threshold = 0.65;  // occupancy above this: occupied
+  double free_threshold = 0.196;     // below this: free; between: unknown
+};
+
+// Flips rows: the image's bottom row becomes grid row 0.
+grid::OccupancyGrid grid_from_image(const GreyImage& image, double resolution,
+                                    const Eigen::Vector2d& origin, const PixelMeaning& meaning);
+
+// map_saver's pixels: 254 free, 0 occupied, 205 unknown; top row = last grid row.
+GreyImage image_from_grid(const grid::OccupancyGrid& grid);
+
+}  // namespace playerkit::map
