@@ -106,7 +106,10 @@ void AmclFilter::laser_update(const LaserScan& scan) {
   laser_update_pending_ = false;
   ++update_count_;
   prepare_beams(scan, parameters_.laser_max_beams, beams_);
-  const LaserModelSettings settings = LaserModelSettings::from(parameters_);
+  LaserModelSettings settings = LaserModelSettings::from(parameters_);
+  // Skipping beams few particles explain helps only a belief that is mostly
+  // in one place; a spread one (global start) explains no beam in majority.
+  settings.beam_skip = settings.beam_skip && !clusters_.empty() && clusters_.front().weight >= 0.5;
   log_likelihoods_.resize(particles_.size());
   std::size_t informative_beams = beams_.size();
   if (parameters_.laser_model == LaserModelType::beam) {

@@ -21,8 +21,11 @@ struct AmclParameters {
   // --- recovery by augmented MCL (Probabilistic Robotics table 8.3) ---
   // Decay rates of the slow and fast averages of the measurement likelihood;
   // 0 and 0 disable random-particle injection. ROS: recovery_alpha_slow/fast.
-  double alpha_slow = 0.001;
-  double alpha_fast = 0.1;
+  // Off by default, as in ROS: on real logs (Radish Intel) a scan full of
+  // people makes any belief look lost, and the random particles it brings
+  // in win in look-alike corridors. Turn it on (0.001, 0.1) for kidnapping.
+  double alpha_slow = 0.0;
+  double alpha_fast = 0.0;
 
   // --- motion model (Probabilistic Robotics table 5.6) ---
   // Each is a variance coefficient: e.g. the translation's standard deviation
@@ -51,6 +54,19 @@ struct AmclParameters {
   double sigma_hit = 0.2;            // ROS: laser_sigma_hit (m)
   double lambda_short = 0.1;         // ROS: laser_lambda_short (1/m)
   double likelihood_max_distance = 2.0;  // ROS: laser_likelihood_max_dist (m)
+  // Likelihood field only: a beam that too few particles can explain (it hit
+  // a person or an open door the map does not have) is left out for every
+  // particle, so that one unmapped obstacle cannot pull the belief to some
+  // other place that happens to fit. A beam counts as explained for a
+  // particle when its end lies within beam_skip_distance of an obstacle; it
+  // is skipped when less than beam_skip_threshold of the weight explains it,
+  // unless more than beam_skip_error_threshold of the beams would go (the
+  // belief is wrong, not the scan). ROS: do_beamskip, beam_skip_distance,
+  // beam_skip_threshold, beam_skip_error_threshold.
+  bool beam_skip = true;
+  double beam_skip_distance = 0.5;
+  double beam_skip_threshold = 0.3;
+  double beam_skip_error_threshold = 0.4;
   // A scan weighs a particle by p(scan | pose)^scan_likelihood_exponent.
   // The models multiply beams as if independent; neighbouring beams are not
   // (one wall, one map error), so the plain product is overconfident: from a

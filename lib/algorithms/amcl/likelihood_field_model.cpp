@@ -64,23 +64,58 @@ void LikelihoodFieldModel::log_likelihoods(std::span<const Particle> particles,
   const double* hy = hit_y_.data();
   const float* table = log_table_.data();
 
-  for (std::size_t i = 0; i < particles.size(); ++i) {
-    const geometry::Pose2& pose = particles[i].pose;
+  const auto endpoint_value = [&](const geometry::Pose2& pose, auto&& visit) {
     const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
     // Cell coordinates of the particle, so each endpoint is one rotation away.
     const double base_col = (pose.x - origin_.x()) * inverse_resolution;
     const double base_row = (pose.y - origin_.y()) * inverse_resolution;
     const double cr = c * inverse_resolution, sr = s * inverse_resolution;
-    double sum = 0.0;
     for (std::size_t b = 0; b < hits; ++b) {
       const int col = static_cast<int>(std::floor(base_col + cr * hx[b] - sr * hy[b]));
       const int row = static_cast<int>(std::floor(base_row + sr * hx[b] + cr * hy[b]));
-      if (col < 0 || row < 0 || col >= width_ || row >= height_) {
-        sum += log_outside_;
-      } else {
-        sum += table[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
-                     static_cast<std::size_t>(col)];
-      }
+      const bool inside = col >= 0 && row >= 0 && col < width_ && row < height_;
+      visit(b, inside ? table[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
+                              static_cast<std::size_t>(col)]
+                      : log_outside_);
+    }
+  };
+
+  if (!settings.beam_skip || hits == 0) {
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+      double sum = 0.0;
+      endpoint_value(particles[i].pose, [&](std::size_t, float value) { sum += value; });
+      out[i] = sum;
+    }
+    return;
+  }
+
+  // Beam skipping: first every particle's value of every beam, and how much
+  // of the weight explains each beam; then the sums over the beams kept.
+  const auto explained = static_cast<float>(
+      log_endpoint_likelihood(settings.beam_skip_distance, beams.max_range, settings));
+  beam_values_.resize(particles.size() * hits);
+  explained_weight_.assign(hits, 0.0);
+  double total_weight = 0.0;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    float* values = beam_values_.data() + i * hits;
+    const double weight = particles[i].weight;
+    total_weight += weight;
+    endpoint_value(particles[i].pose, [&](std::size_t b, float value) {
+      values[b] = value;
+      if (value >= explained) explained_weight_[b] += weight;
+    });
+  }
+  std::size_t skipped = 0;
+  for (std::size_t b = 0; b < hits; ++b) {
+    if (explained_weight_[b] < settings.beam_skip_threshold * total_weight) ++skipped;
+  }
+  const bool skip = static_cast<double>(skipped) <= settings.beam_skip_error_threshold * static_cast<double>(hits);
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const float* values = beam_values_.data() + i * hits;
+    double sum = 0.0;
+    for (std::size_t b = 0; b < hits; ++b) {
+      if (skip && explained_weight_[b] < settings.beam_skip_threshold * total_weight) continue;
+      sum += values[b];
     }
     out[i] = sum;
   }

@@ -48,6 +48,8 @@ class LikelihoodFieldModel {
   LaserModelSettings table_settings_;
   double table_max_range_ = 0.0;
   std::vector<double> hit_x_, hit_y_;  // endpoints of beams that returned
+  std::vector<float> beam_values_;     // beam skipping: per particle, per beam
+  std::vector<double> explained_weight_;  // beam skipping: per beam
 };
 
 }  // namespace playerkit::amcl

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Accuracy and speed of amcl-offline on the bundled Radish logs: for each log,
+# make a map from its corrected poses, degrade its odometry with `perturb`
+# (seed 1, default Pioneer-like model), then localize with each laser model
+# from the true initial pose (tracking) and from nothing (--global, augmented
+# MCL on), and evaluate against the corrected poses. Prints a Markdown table.
+#
+#   bench/amcl_accuracy.sh [BUILD_DIR]        (default: build)
+set -euo pipefail
+repo="$(cd "$(dirname "$0")/.." && pwd)"
+build="${1:-$repo/build}"
+offline="$build/tools/amcl-offline/amcl-offline"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+field() { python3 -c 'import json,sys; d=json.load(sys.stdin); v=d
+for k in sys.argv[1].split("."): v=v[k] if v is not None else None
+print("-" if v is None else (round(v,3) if isinstance(v,float) else v))' "$1"; }
+
+echo "| log | start | model | position RMSE (m) | max (m) | heading RMSE (deg) | converged after | lost | scans | wall (s) | real-time factor |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|"
+for name in intel-corrected freiburg-079-corrected; do
+  log="$repo/tests/data/radish/$name.log.gz"
+  "$offline" map "$log" -o "$work/$name.pgm" 2>/dev/null
+  "$offline" perturb "$log" -o "$work/$name.odom.log" --seed 1 2>/dev/null
+  for run in "tracking likelihood" "tracking beam" "global likelihood"; do
+    set -- $run
+    start_args=(--init-pose truth)
+    [ "$1" = global ] && start_args=(--global --alpha-slow 0.001 --alpha-fast 0.1 --seed 1)
+    summary="$("$offline" localize "$work/$name.odom.log" --map "$work/$name.yaml" --model "$2" \
+      "${start_args[@]}" -o "$work/estimate.csv" 2>&1 >/dev/null | tail -n 1)"
+    "$offline" eval "$work/estimate.csv" --truth "$log" --json >"$work/eval.json"
+    scans="$(sed -n 's/.*: \([0-9]*\) scans.*/\1/p' <<<"$summary")"
+    wall="$(sed -n 's/.* in \([0-9.]*\) s wall.*/\1/p' <<<"$summary")"
+    factor="$(sed -n 's/.*: \([0-9]*\)x real time.*/\1/p' <<<"$summary")"
+    rmse="$(field after_convergence.position_rmse_m <"$work/eval.json")"
+    max="$(field after_convergence.position_max_m <"$work/eval.json")"
+    heading="$(python3 -c 'import json,sys,math; d=json.load(open(sys.argv[1]))["after_convergence"]; print(round(math.degrees(d["heading_rmse_rad"]),2) if d["count"] else "-")' "$work/eval.json")"
+    conv_t="$(field convergence_time_s <"$work/eval.json")"
+    conv_d="$(field convergence_distance_m <"$work/eval.json")"
+    lost="$(field lost_episodes <"$work/eval.json")"
+    echo "| $name | $1 | $2 | $rmse | $max | $heading | ${conv_t} s, ${conv_d} m | $lost | $scans | $wall | ${factor}x |"
+  done
+done

@@ -1,0 +1,85 @@
+#include "localization/offline_localizer.hpp"
+
+#include <chrono>
+#include <stdexcept>
+#include <utility>
+
+#include "algorithms/amcl/amcl_filter.hpp"
+#include "algorithms/amcl/laser_scan.hpp"
+
+namespace playerkit::localization {
+
+namespace {
+
+amcl::LaserScan to_filter_scan(const LoggedScan& logged, const geometry::Pose2& laser_pose) {
+  amcl::LaserScan scan;
+  scan.ranges = logged.ranges;
+  scan.bearings.resize(logged.ranges.size());
+  for (std::size_t i = 0; i < scan.bearings.size(); ++i) {
+    scan.bearings[i] = logged.angle_min + static_cast<double>(i) * logged.angle_increment;
+  }
+  scan.max_range = logged.max_range;
+  scan.sensor_pose = laser_pose;
+  return scan;
+}
+
+Eigen::Matrix3d diagonal_covariance(const InitialBelief& belief) {
+  return Eigen::Vector3d(belief.sigma_x_m * belief.sigma_x_m, belief.sigma_y_m * belief.sigma_y_m,
+                         belief.sigma_yaw_rad * belief.sigma_yaw_rad)
+      .asDiagonal();
+}
+
+}  // namespace
+
+LocalizationSummary localize_log(
+    const std::filesystem::path& log, std::shared_ptr<const grid::OccupancyGrid> map,
+    const OfflineLocalizationOptions& options,
+    const std::function<void(const LocalizedScan& result, const LoggedScan& scan)>& on_scan) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  LoggedScanReader reader(log, options.reader);
+  amcl::AmclFilter filter(options.filter, std::move(map), options.seed);
+  const Eigen::Matrix3d initial_covariance = diagonal_covariance(options.initial);
+  switch (options.initial.kind) {
+    case InitialBelief::Kind::pose:
+      filter.set_pose(options.initial.pose, initial_covariance);
+      break;
+    case InitialBelief::Kind::global:
+      filter.set_global();
+      break;
+    case InitialBelief::Kind::first_truth:
+      break;  // at the first scan
+  }
+
+  LocalizationSummary summary;
+  std::optional<double> first_time;
+  bool initialised = options.initial.kind != InitialBelief::Kind::first_truth;
+  while (auto logged = reader.next()) {
+    if (!logged->odometry) continue;  // counted by the reader
+    if (!initialised) {
+      if (!logged->truth) {
+        throw std::invalid_argument(log.string() + ": the first scan has no true pose to start from");
+      }
+      // The truth is the laser's pose; the filter tracks the robot's.
+      filter.set_pose(logged->truth->compose(options.laser_pose.inverse()), initial_covariance);
+      initialised = true;
+    }
+    const amcl::LaserScan scan = to_filter_scan(*logged, options.laser_pose);
+    LocalizedScan result;
+    result.time = logged->time;
+    result.updated = filter.update(*logged->odometry, &scan);
+    // Between updates the particles stay where they last moved: carry the
+    // estimate to this scan's odometry.
+    result.estimate = filter.predict(*logged->odometry);
+    result.particles = filter.particles().size();
+    if (!first_time) first_time = logged->time;
+    summary.log_seconds = logged->time - *first_time;
+    ++summary.scans;
+    if (result.updated) ++summary.laser_updates;
+    on_scan(result, *logged);
+  }
+  summary.scans_without_odometry = reader.scans_without_odometry();
+  summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  return summary;
+}
+
+}  // namespace playerkit::localization
