@@ -6,6 +6,7 @@ player_serve="$build_dir/tools/player-serve/player-serve"
 player_cat="$build_dir/tools/player-cat/player-cat"
 player_send="$build_dir/tools/player-send/player-send"
 player_log="$build_dir/tools/player-log/player-log"
+amcl_offline="$build_dir/tools/amcl-offline/amcl-offline"
 wire_roundtrip="$build_dir/examples/wire-roundtrip/wire-roundtrip"
 bats_require_minimum_version 1.5.0
 battery_plugin="$build_dir/examples/plugin-driver/libplayerkit_battery_plugin.so"
