@@ -137,7 +137,7 @@ void print_summary(const LogSummary& summary, std::ostream& out) {
 nlohmann::json summary_json(const LogSummary& summary) {
   nlohmann::json json;
   json["file"] = summary.file;
-  json["format"] = to_string(summary.format);
+  json["format"] = std::string(log::to_string(summary.format));
   if (!summary.version.empty()) json["version"] = summary.version;
   json["messages"] = summary.messages;
   json["start"] = summary.start ? nlohmann::json(*summary.start) : nlohmann::json();

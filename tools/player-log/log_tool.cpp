@@ -4,31 +4,8 @@
 #include <cstring>
 #include <sstream>
 
-#include "log/log_input.hpp"
 
 namespace playerkit::plog {
-
-const char* to_string(LogFormat format) { return format == LogFormat::kPlayer ? "player" : "carmen"; }
-
-LogFormat detect_log_format(const std::filesystem::path& path) {
-  auto in = log::open_log_input(path);
-  std::string line;
-  bool player_header = false;
-  // Bounded: a file of nothing but comments is not worth reading to the end.
-  for (int read = 0; read < 1000 && std::getline(*in, line); ++read) {
-    if (line.starts_with("## ")) player_header = true;
-    std::istringstream fields(line);
-    std::string first;
-    if (!(fields >> first) || first.starts_with('#')) continue;
-    const bool numeric = first.find_first_not_of("0123456789.+-eE") == std::string::npos;
-    return numeric ? LogFormat::kPlayer : LogFormat::kCarmen;
-  }
-  if (const auto error = in->error()) throw std::runtime_error(path.string() + ": " + *error);
-  if (player_header) return LogFormat::kPlayer;
-  throw std::runtime_error(path.string() +
-                           ": neither a Player log (\"## Player version\" header, or lines starting with a "
-                           "time) nor a CARMEN log (lines starting with a keyword such as FLASER)");
-}
 
 std::vector<protocol::DeviceAddress> parse_device_list(const std::string& text) {
   std::vector<protocol::DeviceAddress> devices;

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "log/log_format_detection.hpp"
 #include "protocol/device_address.hpp"
 
 namespace playerkit::plog {
@@ -26,13 +27,9 @@ class UsageError : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
-enum class LogFormat { kPlayer, kCarmen };
-const char* to_string(LogFormat format);
-
-// Tells a Player text log from a CARMEN log by its first lines (not its name):
-// "## " headers or a number first are Player, a keyword first is CARMEN.
-// Throws std::runtime_error when the file cannot be read or says neither.
-LogFormat detect_log_format(const std::filesystem::path& path);
+// The two log formats, told apart by content (lib/log/log_format_detection).
+using log::detect_log_format;
+using log::LogFormat;
 
 // "laser:0,position:0" (a bare interface is index 0). Throws UsageError.
 std::vector<protocol::DeviceAddress> parse_device_list(const std::string& text);
