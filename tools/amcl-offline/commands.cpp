@@ -106,6 +106,16 @@ localization::OfflineLocalizationOptions localization_options(const LocalizeComm
     f.translation_noise_from_rotation *= *command.odom_noise_scale;
     f.strafe_noise_from_translation *= *command.odom_noise_scale;
   }
+  if (command.update_thresh) {
+    const auto thresholds = parse_numbers(*command.update_thresh, 2, "--update-thresh");
+    if (thresholds[0] < 0 || thresholds[1] < 0) throw UsageError("--update-thresh: D,A_DEG, both >= 0");
+    options.filter.update_min_distance = thresholds[0];
+    options.filter.update_min_angle = thresholds[1] * kDegree;
+  }
+  if (command.sigma_hit) {
+    if (!(*command.sigma_hit > 0)) throw UsageError("--sigma-hit must be > 0");
+    options.filter.sigma_hit = *command.sigma_hit;
+  }
   if (command.global && command.init_pose) throw UsageError("--global and --init-pose exclude each other");
   if (command.init_var) {
     const auto sigma = parse_numbers(*command.init_var, 3, "--init-var");

@@ -51,6 +51,8 @@ struct LocalizeCommand {
   std::optional<std::size_t> laser_beams;
   std::optional<double> alpha_slow, alpha_fast;  // augmented MCL (0,0: no random particles)
   std::optional<double> odom_noise_scale;         // multiplies the four motion-noise alphas
+  std::optional<std::string> update_thresh;       // "D,A_DEG": update after this much motion
+  std::optional<double> sigma_hit;                // laser hit noise (m)
   std::uint64_t seed = 0;
   std::string format = "csv";
   std::string output = "-";
