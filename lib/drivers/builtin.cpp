@@ -1,5 +1,6 @@
 #include "drivers/builtin.hpp"
 
+#include "drivers/amcl/amcl_driver.hpp"
 #include "drivers/comms/udpbroadcast_driver.hpp"
 #include "drivers/logfile/readlog_driver.hpp"
 #include "drivers/logfile/writelog_driver.hpp"
@@ -16,6 +17,7 @@ void register_builtin_drivers(core::DriverRegistry& registry) {
   registry.add(passthrough_driver_spec());
   registry.add(readlog_driver_spec());
   registry.add(writelog_driver_spec());
+  registry.add(amcl_driver_spec());
 }
 
 }  // namespace playerkit::drivers

@@ -24,7 +24,7 @@ TEST(BuiltinDrivers, RegistersEveryDriverSortedByName) {
     EXPECT_TRUE(static_cast<bool>(spec->factory)) << spec->name;
     EXPECT_GE(spec->limits.request_queue, 1u) << spec->name;
   }
-  EXPECT_EQ(names, (std::vector<std::string>{"lifomcom", "null", "passthrough", "readlog", "udpbroadcast", "writelog"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"amcl", "lifomcom", "null", "passthrough", "readlog", "udpbroadcast", "writelog"}));
 }
 
 TEST(BuiltinDrivers, InterfacesAndAccessAsIn15) {
@@ -38,7 +38,8 @@ TEST(BuiltinDrivers, InterfacesAndAccessAsIn15) {
   for (const Expected& expected : {Expected{"null", protocol::kNullCode, Access::kRead},
                                    Expected{"lifomcom", protocol::kMcomCode, Access::kAll},
                                    Expected{"udpbroadcast", protocol::kCommsCode, Access::kAll},
-                                   Expected{"writelog", protocol::kNullCode, Access::kRead}}) {
+                                   Expected{"writelog", protocol::kNullCode, Access::kRead},
+                                   Expected{"amcl", protocol::kLocalizeCode, Access::kRead}}) {
     const core::DriverSpec* spec = registry.find(expected.name);
     ASSERT_NE(spec, nullptr) << expected.name;
     EXPECT_EQ(spec->interfaces, (std::vector<std::uint16_t>{expected.interface})) << expected.name;
