@@ -3,6 +3,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "localization/localize_wire.hpp"
+#include "log/text_log_writer.hpp"
+#include "protocol/binary_codec.hpp"
+#include "protocol/interfaces.hpp"
+
 namespace playerkit::localization {
 
 namespace {
@@ -22,12 +27,37 @@ void write_row(std::ostream& out, const LocalizedScan& row, bool json) {
   out << line;
 }
 
+protocol::Timestamp to_timestamp(double seconds) {
+  const double whole = std::floor(seconds);
+  auto microseconds = static_cast<std::uint32_t>(std::llround((seconds - whole) * 1e6));
+  auto whole_seconds = static_cast<std::uint32_t>(whole);
+  if (microseconds >= 1000000) {
+    microseconds -= 1000000;
+    ++whole_seconds;
+  }
+  return {whole_seconds, microseconds};
+}
+
+// The host field of the log lines: where the estimate came from.
+constexpr const char* kLogHost = "amcl-offline";
+
 }  // namespace
 
 EstimateWriter::EstimateWriter(std::ostream& out, EstimateFormat format) : out_(out), format_(format) {
   if (format_ == EstimateFormat::csv) out_ << "time,x,y,yaw,std_x,std_y,std_yaw,particles\n";
+  if (format_ == EstimateFormat::player_log) out_ << log::log_file_header();
 }
 
-void EstimateWriter::write(const LocalizedScan& row) { write_row(out_, row, format_ == EstimateFormat::json); }
+void EstimateWriter::write(const LocalizedScan& row) {
+  if (format_ != EstimateFormat::player_log) {
+    write_row(out_, row, format_ == EstimateFormat::json);
+    return;
+  }
+  const protocol::Timestamp time = to_timestamp(row.time);
+  protocol::Message message;
+  message.header = protocol::make_header(protocol::MessageType::kData, {protocol::kLocalizeCode, 0}, time, time);
+  message.payload = protocol::encode(localize_data({&row.estimate, 1}, 0, time));
+  out_ << log::format_data_line(message, kLogHost, protocol::kDefaultPort);
+}
 
 }  // namespace playerkit::localization

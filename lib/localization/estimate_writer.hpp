@@ -1,7 +1,8 @@
 #pragma once
 // The rows `amcl-offline localize` prints: one per scan, in metres and
 // radians. CSV with the header `time,x,y,yaw,std_x,std_y,std_yaw,particles`,
-// or JSON lines with the same keys.
+// JSON lines with the same keys, or a Player 1.5 text log of localize:0 data
+// (one hypothesis per line, wire units) that player-log and readlog read.
 
 #include <ostream>
 
@@ -9,11 +10,11 @@
 
 namespace playerkit::localization {
 
-enum class EstimateFormat { csv, json };
+enum class EstimateFormat { csv, json, player_log };
 
 class EstimateWriter {
  public:
-  // CSV writes its header at once.
+  // CSV and the Player log write their headers at once.
   EstimateWriter(std::ostream& out, EstimateFormat format);
   void write(const LocalizedScan& row);
 

@@ -72,6 +72,58 @@ for line in open("rows.jsonl"):
     assert sorted(json.loads(line)) == sorted(["time","x","y","yaw","std_x","std_y","std_yaw","particles"])'
 }
 
+@test "--format log writes Player localize lines that player-log reads" {
+  "$amcl_offline" map "$intel" -o intel.pgm 2>/dev/null
+  "$amcl_offline" localize "$intel" --map intel.yaml --init-pose truth --format log -o estimate.log 2>/dev/null
+  run --separate-stderr "$player_log" info --strict --json estimate.log
+  [ "$status" -eq 0 ]
+  [ "$(json_number devices.localize:0.count <<<"$output")" -eq 910 ]
+}
+
+@test "the manual's post-hoc localization: player-serve -r with readlog and amcl, a client reads localize:0" {
+  "$amcl_offline" map "$intel" -o intel.pgm 2>/dev/null
+  "$player_log" convert "$intel" -o intel.log 2>/dev/null
+  cat >bar.cfg <<CFG
+position:0 (driver "readlog" index 0)
+laser:0 (driver "readlog" index 0)
+localize:0
+(
+  driver "amcl"
+  position_index 0
+  laser_index 0
+  map_file "intel.yaml"
+  init_pose [0.6 0.0 -20]
+  init_pose_var [0.2 0.2 10]
+)
+CFG
+  start_server server.log -p 0 --bind 127.0.0.1 -f 100 -r intel.log bar.cfg
+  run --separate-stderr timeout 30 "$player_cat" "127.0.0.1:$server_port" localize:0 -n 20 --si --format json
+  kill -TERM "$server_pid"
+  wait_for_exit "$server_pid"
+  [ "$status" -eq 0 ]
+  [ "$(wc -l <<<"$output")" -eq 20 ]
+  # The last estimate against the corrected pose of the scan it belongs to.
+  printf '%s\n' "$output" >rows.jsonl
+  python3 - "$intel" <<'PY'
+import gzip, json, math, sys
+rows = [json.loads(line) for line in open("rows.jsonl")]
+last = rows[-1]["data"]
+best = max(last["hypoths"][: last["hypoth_count"]], key=lambda h: h["alpha"])
+time = round(rows[-1]["timestamp"], 3)
+truth = {}
+for line in gzip.open(sys.argv[1], "rt"):
+    t = line.split()
+    if t and t[0] == "FLASER":
+        n = int(t[1])
+        truth[round(float(t[-3]), 3)] = (float(t[n + 2]), float(t[n + 3]))
+nearest = min(truth, key=lambda k: abs(k - time))
+x, y = truth[nearest]
+error = math.hypot(best["mean"][0] - x, best["mean"][1] - y)
+assert abs(nearest - time) < 0.01, (nearest, time)
+assert error < 0.5, (error, best, (x, y))
+PY
+}
+
 @test "usage errors exit 2, unreadable inputs exit 1" {
   "$amcl_offline" map "$intel" -o intel.pgm 2>/dev/null
   run --separate-stderr "$amcl_offline" localize "$intel" --map intel.yaml

@@ -171,7 +171,8 @@ int run_localize(const LocalizeCommand& command, std::ostream& out, std::ostream
   auto options = localization_options(command);
   localization::EstimateFormat format = localization::EstimateFormat::csv;
   if (command.format == "json") format = localization::EstimateFormat::json;
-  else if (command.format != "csv") throw UsageError("--format: '" + command.format + "' is not csv or json");
+  else if (command.format == "log") format = localization::EstimateFormat::player_log;
+  else if (command.format != "csv") throw UsageError("--format: '" + command.format + "' is not csv, json or log");
 
   map::MapLoadOptions map_options;
   map_options.resolution = command.scale;

@@ -24,7 +24,7 @@ Examples:
   amcl-offline eval est.csv --truth intel.log.gz
 
 localize writes one row per scan: time,x,y,yaw,std_x,std_y,std_yaw,particles
-(metres, radians), and a one-line summary on stderr: scans, wall time,
+(metres, radians; --format log: Player log localize:0 lines instead), and a one-line summary on stderr: scans, wall time,
 real-time factor. eval reports the absolute trajectory error (RMSE and max
 of position and heading) and the time and distance to convergence (within
 0.3 m and 10 degrees for 5 s).
@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
   localize_app->add_option("--update-thresh", localize.update_thresh, "D,A_DEG: update after this motion (default 0.2,30)");
   localize_app->add_option("--sigma-hit", localize.sigma_hit, "laser hit noise in metres (default 0.2)");
   localize_app->add_option("--seed", localize.seed, "random seed")->capture_default_str();
-  localize_app->add_option("--format", localize.format, "csv or json (lines)")->capture_default_str();
+  localize_app->add_option("--format", localize.format, "csv, json (lines) or log (Player localize:0 lines)")->capture_default_str();
   localize_app->add_option("-o,--output", localize.output, "where the rows go (- for stdout)")->capture_default_str();
   localize_app->add_option("--plot", localize.plot, "PNG of the map, the paths and the last scan");
 

@@ -8,13 +8,19 @@
 #include <string>
 #include <utility>
 
-#include "drivers/amcl/localize_wire.hpp"
+#include "localization/localize_wire.hpp"
 #include "protocol/binary_codec.hpp"
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::drivers {
 
 namespace {
+
+using localization::covariance_from_wire;
+using localization::laser_scan;
+using localization::localize_data;
+using localization::odometry_pose;
+using localization::pose_from_wire;
 
 // How long the idle thread waits for data before answering requests again.
 constexpr std::chrono::milliseconds kIdleWait{10};

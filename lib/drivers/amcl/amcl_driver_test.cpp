@@ -9,7 +9,7 @@
 #include <string>
 
 #include "drivers/amcl/amcl_test_support.hpp"
-#include "drivers/amcl/localize_wire.hpp"
+#include "localization/localize_wire.hpp"
 #include "drivers/logfile/readlog_driver.hpp"
 #include "drivers/test_support.hpp"
 #include "protocol/binary_codec.hpp"
@@ -22,6 +22,8 @@ namespace {
 using namespace std::chrono_literals;
 using protocol::kLocalizeCode;
 using testing::eventually;
+using localization::covariance_from_wire;
+using localization::pose_from_wire;
 
 // The manual's post-hoc localization example (7.36) on the cave map; with
 // `guess`, a start 0.3 m and 6 degrees off the truth.

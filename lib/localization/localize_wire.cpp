@@ -1,11 +1,11 @@
-#include "drivers/amcl/localize_wire.hpp"
+#include "localization/localize_wire.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 
-namespace playerkit::drivers {
+namespace playerkit::localization {
 
 namespace {
 
@@ -91,4 +91,4 @@ protocol::LocalizeData localize_data(std::span<const amcl::Hypothesis> hypothese
   return data;
 }
 
-}  // namespace playerkit::drivers
+}  // namespace playerkit::localization

@@ -20,7 +20,7 @@
 #include "protocol/messages/localize.hpp"
 #include "protocol/messages/position.hpp"
 
-namespace playerkit::drivers {
+namespace playerkit::localization {
 
 inline constexpr double kArcsecondsPerRadian = 180.0 * 3600.0 / std::numbers::pi;
 inline constexpr double kMillimetresPerMetre = 1000.0;
@@ -40,4 +40,4 @@ Eigen::Matrix3d covariance_from_wire(const std::array<std::array<std::int64_t, 3
 protocol::LocalizeData localize_data(std::span<const amcl::Hypothesis> hypotheses,
                                      std::uint16_t pending_count, protocol::Timestamp pending_time);
 
-}  // namespace playerkit::drivers
+}  // namespace playerkit::localization

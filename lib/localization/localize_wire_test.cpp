@@ -1,4 +1,4 @@
-#include "drivers/amcl/localize_wire.hpp"
+#include "localization/localize_wire.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 
 #include "protocol/binary_codec.hpp"
 
-namespace playerkit::drivers {
+namespace playerkit::localization {
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
@@ -83,4 +83,4 @@ TEST(LocalizeWire, OdometryAndLaserToSiUnits) {
 }
 
 }  // namespace
-}  // namespace playerkit::drivers
+}  // namespace playerkit::localization
