@@ -7,8 +7,9 @@ load helpers
   run "$player_serve" --check "$repo_root/data/config/post-hoc-localization.cfg"
   [ "$status" -eq 0 ]
   [[ "${lines[0]}" == *"post-hoc-localization.cfg: 3 devices, served on port 6665" ]]
-  [[ "$output" =~ localize:0\ +driver\ amcl\ \(not\ in\ this\ build\) ]]
-  [[ "$output" == *'map_file "intel-lab-map.pgm"'* ]]
+  [[ "$output" =~ localize:0\ +driver\ amcl ]]
+  [[ "$output" != *"not in this build"* ]]
+  [[ "$output" == *'map_file "intel-lab-map.yaml"'* ]]
 }
 
 @test "--check shows robot names and always-on devices" {
