@@ -27,17 +27,6 @@ void write_row(std::ostream& out, const LocalizedScan& row, bool json) {
   out << line;
 }
 
-protocol::Timestamp to_timestamp(double seconds) {
-  const double whole = std::floor(seconds);
-  auto microseconds = static_cast<std::uint32_t>(std::llround((seconds - whole) * 1e6));
-  auto whole_seconds = static_cast<std::uint32_t>(whole);
-  if (microseconds >= 1000000) {
-    microseconds -= 1000000;
-    ++whole_seconds;
-  }
-  return {whole_seconds, microseconds};
-}
-
 // The host field of the log lines: where the estimate came from.
 constexpr const char* kLogHost = "amcl-offline";
 
@@ -53,7 +42,7 @@ void EstimateWriter::write(const LocalizedScan& row) {
     write_row(out_, row, format_ == EstimateFormat::json);
     return;
   }
-  const protocol::Timestamp time = to_timestamp(row.time);
+  const protocol::Timestamp time = protocol::Timestamp::from_seconds(row.time);
   protocol::Message message;
   message.header = protocol::make_header(protocol::MessageType::kData, {protocol::kLocalizeCode, 0}, time, time);
   message.payload = protocol::encode(localize_data({&row.estimate, 1}, 0, time));
