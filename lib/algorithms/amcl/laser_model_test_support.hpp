@@ -2,6 +2,8 @@
 // Scores of one scan at a true pose and at nearby wrong ones, for the laser
 // model tests.
 
+#include "algorithms/amcl/laser_model_settings.hpp"
+#include "algorithms/amcl/laser_scan.hpp"
 #include "algorithms/amcl/particle_set.hpp"
 #include "algorithms/geometry/pose2.hpp"
 
@@ -23,6 +25,18 @@ inline std::vector<Particle> true_and_offset_poses(const geometry::Pose2& truth 
     particles.push_back({{truth.x + offset.x, truth.y + offset.y, truth.yaw + offset.yaw}, 1.0});
   }
   return particles;
+}
+
+// Each particle's log-likelihood of `scan` under `model` (either laser model),
+// default settings.
+template <typename Model>
+std::vector<double> scores(Model& model, const std::vector<Particle>& particles, const LaserScan& scan,
+                           std::size_t max_beams = 30) {
+  PreparedBeams beams;
+  prepare_beams(scan, max_beams, beams);
+  std::vector<double> out(particles.size());
+  model.log_likelihoods(particles, beams, LaserModelSettings{}, out);
+  return out;
 }
 
 }  // namespace playerkit::amcl::test

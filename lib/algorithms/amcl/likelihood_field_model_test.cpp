@@ -11,14 +11,7 @@
 namespace playerkit::amcl {
 namespace {
 
-std::vector<double> scores(LikelihoodFieldModel& model, const std::vector<Particle>& particles,
-                           const LaserScan& scan, std::size_t max_beams = 30) {
-  PreparedBeams beams;
-  prepare_beams(scan, max_beams, beams);
-  std::vector<double> out(particles.size());
-  model.log_likelihoods(particles, beams, LaserModelSettings{}, out);
-  return out;
-}
+using test::scores;
 
 TEST(LikelihoodFieldModel, EndpointLikelihoodIsTheHitGaussianPlusRandom) {
   const LaserModelSettings s;
