@@ -143,9 +143,11 @@ localization::OfflineLocalizationOptions localization_options(const LocalizeComm
 int run_map(const MapCommand& command, std::ostream& err) {
   if (!(command.resolution > 0)) throw UsageError("--resolution must be > 0");
   if (!(command.max_range > 0)) throw UsageError("--max-range must be > 0");
+  if (!(command.no_return_clears >= 0)) throw UsageError("--no-return-clears must be >= 0");
   grid::OccupancyMappingParameters parameters;
   parameters.resolution = command.resolution;
   parameters.max_usable_range = command.max_range;
+  parameters.no_return_clear_range = command.no_return_clears;
   localization::MapFromLogOptions options;
   options.use_odometry_without_truth = command.use_odometry;
   const auto result = localization::map_from_log(command.log, parameters, options);

@@ -28,6 +28,7 @@ struct MapCommand {
   std::string output;  // .pgm; the .yaml goes beside it
   double resolution = 0.05;
   double max_range = 30.0;
+  double no_return_clears = 0.0;  // metres; 0: no-return readings leave the map alone
   bool use_odometry = false;  // logs without truth: trust their odometry
 };
 

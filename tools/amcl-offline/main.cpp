@@ -59,6 +59,10 @@ int main(int argc, char** argv) {
   map_app->add_option("-o,--output", map.output, "the .pgm to write (its .yaml goes beside it)")->required();
   map_app->add_option("--resolution", map.resolution, "metres per cell")->capture_default_str();
   map_app->add_option("--max-range", map.max_range, "readings beyond this only clear space (m)")->capture_default_str();
+  map_app->add_option("--no-return-clears", map.no_return_clears,
+                      "how far a no-return (max-range) reading clears space (m); 0: not at all, as glass and "
+                      "black walls return nothing either")
+      ->capture_default_str();
   map_app->add_flag("--use-odometry", map.use_odometry, "use odometry for scans without a true pose");
 
   offline::PerturbCommand perturb;

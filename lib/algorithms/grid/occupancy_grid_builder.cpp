@@ -37,6 +37,9 @@ OccupancyGridBuilder::OccupancyGridBuilder(OccupancyMappingParameters parameters
   if (!(parameters_.max_usable_range > 0.0) || !std::isfinite(parameters_.max_usable_range)) {
     throw std::invalid_argument("OccupancyGridBuilder: max_usable_range must be positive");
   }
+  if (!(parameters_.no_return_clear_range >= 0.0)) {  // NaN too
+    throw std::invalid_argument("OccupancyGridBuilder: no_return_clear_range must be non-negative");
+  }
   if (!(parameters_.margin >= 0.0) || !std::isfinite(parameters_.margin)) {
     throw std::invalid_argument("OccupancyGridBuilder: margin must be non-negative");
   }
@@ -64,8 +67,10 @@ void OccupancyGridBuilder::add_scan(const geometry::Pose2& laser_pose,
     const double range = ranges[i];
     if (std::isnan(range) || range <= 0.0) continue;
     const bool no_return = range >= max_range;
-    const double usable = no_return ? std::min(max_range, parameters_.max_usable_range)
-                                    : std::min(range, parameters_.max_usable_range);
+    const double usable =
+        no_return ? std::min({max_range, parameters_.max_usable_range, parameters_.no_return_clear_range})
+                  : std::min(range, parameters_.max_usable_range);
+    if (usable <= 0.0) continue;
     const double bearing = laser_pose.yaw + angle_min + static_cast<double>(i) * angle_increment;
     const Eigen::Vector2d end =
         start + usable * cells_per_metre * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));

@@ -91,9 +91,39 @@ TEST(OccupancyGridBuilder, RebuildsTheWallsOfASquareRoom) {
   EXPECT_EQ(interior_free, interior);
 }
 
+TEST(OccupancyGridBuilder, NoReturnReadingsCarryNoInformationByDefault) {
+  OccupancyMappingParameters parameters;
+  parameters.margin = 1.5;  // so that the unknown cells checked lie inside the grid
+  OccupancyGridBuilder builder(parameters);
+  std::vector<double> ranges(kBeams, 5.0);  // == max_range: nothing seen
+  ranges[kBeams / 2] = 2.0;                 // straight ahead: a wall at 2 m
+  for (int i = 0; i < 5; ++i) builder.add_scan({0.0, 0.0, 0.0}, ranges, kAngleMin, kIncrement, 5.0);
+  const OccupancyGrid grid = builder.build();
+  EXPECT_NEAR(grid.height() * 0.05, 3.0, 0.11);  // the margin around one beam's cells: nothing else was touched
+  EXPECT_EQ(grid.state_at_world({2.0, 0.0}), CellState::occupied);
+  EXPECT_EQ(grid.state_at_world({1.0, 0.0}), CellState::free);
+  EXPECT_EQ(grid.state_at_world({0.0, 1.0}), CellState::unknown);   // to the left: a no-return beam
+  EXPECT_EQ(grid.state_at_world({-0.1, -1.0}), CellState::unknown);  // to the right
+}
+
+TEST(OccupancyGridBuilder, NoReturnReadingsClearUpToTheirClearRange) {
+  OccupancyMappingParameters parameters;
+  parameters.margin = 0.0;
+  parameters.no_return_clear_range = 3.0;
+  OccupancyGridBuilder builder(parameters);
+  const std::vector<double> ranges(kBeams, 5.0);
+  for (int i = 0; i < 5; ++i) builder.add_scan({0.0, 0.0, 0.0}, ranges, kAngleMin, kIncrement, 5.0);
+  const OccupancyGrid grid = builder.build();
+  EXPECT_EQ(grid.state_at_world({0.0, 2.8}), CellState::free);
+  EXPECT_EQ(grid.state_at_world({2.8, 0.0}), CellState::free);
+  EXPECT_EQ(grid.state_at_world({0.0, 3.3}), CellState::unknown);
+  for (const CellState state : grid.cells()) EXPECT_NE(state, CellState::occupied);
+}
+
 TEST(OccupancyGridBuilder, NoReturnReadingsClearButDoNotMark) {
   OccupancyMappingParameters parameters;
   parameters.margin = 0.0;
+  parameters.no_return_clear_range = 100.0;  // beyond max_range: clears up to max_range
   OccupancyGridBuilder builder(parameters);
   const std::vector<double> ranges(kBeams, 5.0);  // == max_range: nothing seen
   for (int i = 0; i < 5; ++i) builder.add_scan({0.0, 0.0, 0.0}, ranges, kAngleMin, kIncrement, 5.0);
@@ -173,6 +203,8 @@ TEST(OccupancyGridBuilder, GrowsIntoNegativeAndFarCoordinates) {
 TEST(OccupancyGridBuilder, RejectsBadParameters) {
   EXPECT_THROW(OccupancyGridBuilder({.resolution = 0.0}), std::invalid_argument);
   EXPECT_THROW(OccupancyGridBuilder({.max_usable_range = -1.0}), std::invalid_argument);
+  EXPECT_THROW(OccupancyGridBuilder({.no_return_clear_range = -1.0}), std::invalid_argument);
+  EXPECT_THROW(OccupancyGridBuilder({.no_return_clear_range = std::nan("")}), std::invalid_argument);
   EXPECT_THROW(OccupancyGridBuilder({.occupied_probability = 1.0}), std::invalid_argument);
   EXPECT_THROW(OccupancyGridBuilder({.margin = -0.1}), std::invalid_argument);
 }
