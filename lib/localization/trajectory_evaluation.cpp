@@ -117,11 +117,22 @@ TrajectoryEvaluation evaluate_trajectory(const Trajectory& estimate, const Traje
     result.convergence_time_s = rows[*converged].time - estimate.front().time;
     result.convergence_distance_m = rows[*converged].truth_path;
     result.after_convergence = statistics(rows, *converged);
+    bool in_episode = false;
+    double episode_start = 0;
     for (std::size_t i = *converged; i < rows.size(); ++i) {
-      if (rows[i].within) continue;
+      if (rows[i].within) {
+        if (in_episode) result.longest_lost_s = std::max(result.longest_lost_s, rows[i].time - episode_start);
+        in_episode = false;
+        continue;
+      }
       ++result.rows_outside_after_convergence;
-      if (rows[i - 1].within) ++result.lost_episodes;
+      if (!in_episode) {
+        ++result.lost_episodes;
+        in_episode = true;
+        episode_start = rows[i].time;
+      }
     }
+    if (in_episode) result.longest_lost_s = std::max(result.longest_lost_s, rows.back().time - episode_start);
   }
   return result;
 }
@@ -137,6 +148,7 @@ std::string TrajectoryEvaluation::to_json(int indent) const {
       {"after_convergence", statistics_json(after_convergence)},
       {"lost_episodes", lost_episodes},
       {"rows_outside_after_convergence", rows_outside_after_convergence},
+      {"longest_lost_s", longest_lost_s},
       {"options",
        {{"time_tolerance_s", options.time_tolerance_s},
         {"max_time_gap_s", options.max_time_gap_s},

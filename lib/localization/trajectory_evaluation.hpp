@@ -49,6 +49,9 @@ struct TrajectoryEvaluation {
   std::optional<double> convergence_distance_m;  // truth path from the first matched estimate
   std::size_t lost_episodes = 0;                 // times the error left the bounds after convergence
   std::size_t rows_outside_after_convergence = 0;
+  // From the first row of an episode to the first row back within the
+  // bounds (or the last row): tells a one-scan blip from a real loss.
+  double longest_lost_s = 0;
   EvaluationOptions options;
 
   bool converged() const { return convergence_time_s.has_value(); }

@@ -83,9 +83,25 @@ TEST(TrajectoryEvaluation, ConvergenceTimeAndDistanceOfAConvergingEstimate) {
   EXPECT_NEAR(*result.convergence_distance_m, 8.5, 1e-9);
   EXPECT_EQ(result.lost_episodes, 1u);
   EXPECT_EQ(result.rows_outside_after_convergence, 1u);
+  EXPECT_DOUBLE_EQ(result.longest_lost_s, 0.5);  // out at 20 s, back at 20.5 s
   EXPECT_NEAR(result.after_convergence.position_max_m, 1.0, 1e-12);
   EXPECT_EQ(result.after_convergence.count, truth.size() - 17);
   EXPECT_NE(result.to_json().find("\"convergence_time_s\": 8.5"), std::string::npos) << result.to_json();
+}
+
+TEST(TrajectoryEvaluation, AnEpisodeThatNeverEndsLastsToTheLastRow) {
+  const auto truth = straight_truth(30);
+  Trajectory estimate = truth;
+  for (auto& entry : estimate) {
+    if (std::abs(entry.time - 10.0) < 0.75) entry.pose.yaw = 15 * kDegree;  // 9.5 .. 10.5 s: heading off
+    if (entry.time >= 22.0) entry.pose.y = 0.5;                             // from 22 s to the end: position off
+  }
+  const auto result = evaluate_trajectory(estimate, truth);
+  ASSERT_TRUE(result.converged());
+  EXPECT_EQ(result.lost_episodes, 2u);
+  EXPECT_EQ(result.rows_outside_after_convergence, 3u + 17u);
+  EXPECT_DOUBLE_EQ(result.longest_lost_s, 8.0);
+  EXPECT_NE(result.to_json().find("\"longest_lost_s\": 8.0"), std::string::npos) << result.to_json();
 }
 
 TEST(TrajectoryEvaluation, ABriefVisitWithinBoundsIsNotConvergence) {

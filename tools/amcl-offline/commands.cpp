@@ -249,7 +249,9 @@ int run_eval(const EvalCommand& command, std::ostream& out, std::ostream& err) {
     row("after convergence", result.after_convergence);
     out << std::setprecision(1) << "converged after " << *result.convergence_time_s << " s";
     if (result.convergence_distance_m) out << " and " << *result.convergence_distance_m << " m";
-    out << "; lost " << result.lost_episodes << " time(s) afterwards\n";
+    out << "; lost " << result.lost_episodes << " time(s) afterwards";
+    if (result.lost_episodes > 0) out << ", the longest for " << result.longest_lost_s << " s";
+    out << "\n";
   } else {
     out << "never converged (within " << result.options.converged_position_m << " m and "
         << result.options.converged_heading_rad / kDegree << " deg)\n";

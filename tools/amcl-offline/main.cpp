@@ -96,8 +96,10 @@ int main(int argc, char** argv) {
   localize_app->add_option("--particles", localize.particles, "MIN,MAX particles (default 100,5000)");
   localize_app->add_option("--model", localize.model, "laser model: likelihood or beam")->capture_default_str();
   localize_app->add_option("--laser-beams", localize.laser_beams, "beams used per scan (default 30)");
-  localize_app->add_option("--alpha-slow", localize.alpha_slow, "augmented MCL slow average rate (default 0.001)");
-  localize_app->add_option("--alpha-fast", localize.alpha_fast, "augmented MCL fast average rate (default 0.1); 0,0 disables");
+  localize_app->add_option("--alpha-slow", localize.alpha_slow,
+                           "augmented MCL slow average rate, e.g. 0.001 (default 0: no random particles)");
+  localize_app->add_option("--alpha-fast", localize.alpha_fast,
+                           "augmented MCL fast average rate, e.g. 0.1, above the slow one (default 0)");
   localize_app->add_option("--odom-noise", localize.odom_noise_scale, "scale the motion model's noise (default 1)");
   localize_app->add_option("--update-thresh", localize.update_thresh, "D,A_DEG: update after this motion (default 0.2,30)");
   localize_app->add_option("--sigma-hit", localize.sigma_hit, "laser hit noise in metres (default 0.2)");
