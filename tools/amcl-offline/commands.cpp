@@ -3,9 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
-#include <memory>
 #include <numbers>
 #include <sstream>
 #include <vector>
@@ -18,6 +16,7 @@
 #include "log/log_format_detection.hpp"
 #include "map/map_file.hpp"
 #include "map/trajectory_plot.hpp"
+#include "output_file.hpp"
 
 namespace playerkit::amcl_offline {
 
@@ -45,28 +44,7 @@ std::vector<double> parse_numbers(const std::string& text, std::size_t count, co
   return values;
 }
 
-class OutputFile {
- public:
-  OutputFile(const std::string& path, std::ostream& standard_out) : path_(path) {
-    if (path == "-") {
-      out_ = &standard_out;
-      return;
-    }
-    file_ = std::make_unique<std::ofstream>(path);
-    if (!*file_) throw std::runtime_error("cannot write " + path);
-    out_ = file_.get();
-  }
-  std::ostream& stream() { return *out_; }
-  void finish() {
-    out_->flush();
-    if (!*out_) throw std::runtime_error("cannot write " + path_);
-  }
-
- private:
-  std::string path_;
-  std::unique_ptr<std::ofstream> file_;
-  std::ostream* out_ = nullptr;
-};
+using tools::OutputFile;
 
 localization::OfflineLocalizationOptions localization_options(const LocalizeCommand& command) {
   localization::OfflineLocalizationOptions options;
@@ -162,7 +140,7 @@ int run_map(const MapCommand& command, std::ostream& err) {
 int run_perturb(const PerturbCommand& command, std::ostream& out, std::ostream& err) {
   OutputFile output(command.output, out);
   const auto summary = localization::perturb_log(command.log, output.stream(), command.model, command.seed);
-  output.finish();
+  output.flush();
   err << std::fixed << std::setprecision(2) << "amcl-offline: " << summary.odometry_poses_changed
       << " odometry poses degraded over " << summary.truth_path_m << " m; final drift "
       << summary.final_position_drift_m << " m, " << summary.final_heading_drift_rad / kDegree << " deg\n";
@@ -206,7 +184,7 @@ int run_localize(const LocalizeCommand& command, std::ostream& out, std::ostream
         if (command.progress && ++shown % 50 == 0) err << "\ramcl-offline: " << shown << " scans" << std::flush;
       });
   if (command.progress) err << "\r\033[K";
-  output.finish();
+  output.flush();
   if (command.plot) {
     std::vector<map::PlotPath> paths;
     if (!true_path.empty()) paths.push_back({true_path, {0, 160, 0}, "truth"});

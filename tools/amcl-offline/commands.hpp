@@ -9,19 +9,17 @@
 #include <stdexcept>
 #include <string>
 
+#include "exit_status.hpp"
 #include "localization/odometry_perturbation.hpp"
 #include "localization/offline_localizer.hpp"
 
 namespace playerkit::amcl_offline {
 
-inline constexpr int kExitOk = 0;
-inline constexpr int kExitFailure = 1;  // unreadable input, cannot write, did not converge (eval --require)
-inline constexpr int kExitUsage = 2;
-
-class UsageError : public std::invalid_argument {
- public:
-  using std::invalid_argument::invalid_argument;
-};
+// 1: unreadable input, cannot write.
+using tools::kExitFailure;
+using tools::kExitOk;
+using tools::kExitUsage;
+using tools::UsageError;
 
 struct MapCommand {
   std::string log;

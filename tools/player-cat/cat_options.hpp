@@ -6,29 +6,26 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "client/endpoint.hpp"
 #include "field_path.hpp"
+#include "exit_status.hpp"
 #include "protocol/constants.hpp"
 #include "protocol/device_address.hpp"
 
 namespace playerkit::cat {
 
-inline constexpr int kExitOk = 0;
-inline constexpr int kExitFailure = 1;  // connection, server, device or output problems
-inline constexpr int kExitUsage = 2;
+// 1: connection, server, device or output problems.
+using tools::kExitFailure;
+using tools::kExitOk;
+using tools::kExitUsage;
+using tools::UsageError;
 
 enum class OutputFormat { kText, kJson, kCsv, kLog };
 // -t as in candump: absolute, delta since the previous line, zero-based.
 enum class TimeStyle { kAbsolute, kDelta, kZero };
-
-class UsageError : public std::invalid_argument {
- public:
-  using std::invalid_argument::invalid_argument;
-};
 
 // The flags as typed; empty strings and nullopt mean "not given".
 struct CommandLine {

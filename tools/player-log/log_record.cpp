@@ -51,7 +51,7 @@ class Limits {
   Clock::time_point deadline_{};
 };
 
-void record_from_server(const RecordOptions& options, Output& output, std::ostream& err, Limits& limits) {
+void record_from_server(const RecordOptions& options, OutputFile& output, std::ostream& err, Limits& limits) {
   auto connection = client::Client::connect(options.server.host, options.server.port,
                                             std::chrono::milliseconds(static_cast<long>(options.timeout * 1000)));
   for (const auto device : options.devices) {
@@ -64,7 +64,7 @@ void record_from_server(const RecordOptions& options, Output& output, std::ostre
   }
   auto& stream = output.stream();
   stream << log::log_file_header();
-  output.flush_and_check();
+  output.flush();
   const std::string& host = options.server.host;
   const std::set<protocol::DeviceAddress> wanted(options.devices.begin(), options.devices.end());
   bool data_since_sync = false;
@@ -88,11 +88,11 @@ void record_from_server(const RecordOptions& options, Output& output, std::ostre
     } else {
       continue;
     }
-    output.flush_and_check();
+    output.flush();
   }
 }
 
-void record_from_stdin(const RecordOptions& options, std::istream& in, Output& output, std::ostream& err,
+void record_from_stdin(const RecordOptions& options, std::istream& in, OutputFile& output, std::ostream& err,
                        Limits& limits) {
   auto& stream = output.stream();
   auto version = log::LogFormatVersion::k0_0_0;
@@ -127,10 +127,10 @@ void record_from_stdin(const RecordOptions& options, std::istream& in, Output& o
       stream << text << "\n";
       if (std::holds_alternative<log::DataLine>(line)) ++limits.recorded;
     }
-    output.flush_and_check();
+    output.flush();
   }
   if (!header_written) stream << log::log_file_header();
-  output.flush_and_check();
+  output.flush();
   if (malformed > 0) err << "player-log: " << malformed << " malformed line(s) skipped\n";
 }
 
@@ -159,7 +159,7 @@ void parse_record_targets(const std::vector<std::string>& targets, RecordOptions
 int run_record(const RecordOptions& options, std::istream& in, std::ostream& out, std::ostream& err,
                const std::function<bool()>& stop_requested) {
   try {
-    Output output(options.output, out);
+    OutputFile output(options.output, out);
     Limits limits(options, stop_requested);
     if (options.from_stdin) record_from_stdin(options, in, output, err, limits);
     else record_from_server(options, output, err, limits);

@@ -1,9 +1,6 @@
 #include "log_tool.hpp"
 
-#include <cerrno>
-#include <cstring>
 #include <sstream>
-
 
 namespace playerkit::plog {
 
@@ -18,25 +15,6 @@ std::vector<protocol::DeviceAddress> parse_device_list(const std::string& text) 
   }
   if (devices.empty()) throw UsageError("--devices: no device named");
   return devices;
-}
-
-Output::Output(const std::string& path, std::ostream& standard_out) : path_(path), out_(&standard_out) {
-  if (path == "-") {
-    path_ = "stdout";
-    return;
-  }
-  file_ = std::make_unique<std::ofstream>(path, std::ios::out | std::ios::trunc | std::ios::binary);
-  if (!*file_) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
-  out_ = file_.get();
-}
-
-void Output::check() const {
-  if (!*out_) throw std::runtime_error("cannot write " + path_ + ": " + std::strerror(errno));
-}
-
-void Output::flush_and_check() {
-  out_->flush();
-  check();
 }
 
 void Progress::show() {

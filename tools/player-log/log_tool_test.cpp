@@ -42,14 +42,5 @@ TEST(ParseDeviceList, NamesDevicesOrFails) {
   EXPECT_THROW(parse_device_list(""), UsageError);
 }
 
-TEST(Output, DashIsStdoutAndUnwritablePathsFail) {
-  std::ostringstream standard_out;
-  Output output("-", standard_out);
-  output.stream() << "x";
-  output.flush_and_check();
-  EXPECT_EQ(standard_out.str(), "x");
-  EXPECT_THROW(Output("/nonexistent/dir/out.log", standard_out), std::runtime_error);
-}
-
 }  // namespace
 }  // namespace playerkit::plog
