@@ -3,6 +3,9 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
 #include <system_error>
 
 #include "log/text_log_fields.hpp"
@@ -12,6 +15,26 @@ namespace {
 
 std::string quoted(std::string_view text) { return std::string("'").append(text).append("'"); }
 
+// What a field is called in an error message ("odometry theta", "range 17"),
+// put into a string only when there is an error: a 361-reading line costs none.
+struct FieldName {
+  FieldName(std::string_view field, std::string_view field_part = {},
+            std::optional<std::size_t> field_index = std::nullopt)
+      : what(field), part(field_part), index(field_index) {}
+  FieldName(const char* field) : FieldName(std::string_view(field)) {}
+
+  std::string str() const {
+    std::string name(what);
+    if (!part.empty()) name.append(" ").append(part);
+    if (index) name.append(" ").append(std::to_string(*index));
+    return name;
+  }
+
+  std::string_view what;
+  std::string_view part;
+  std::optional<std::size_t> index;
+};
+
 // The fields of one known record, read left to right.
 class FieldCursor {
  public:
@@ -20,8 +43,8 @@ class FieldCursor {
   std::size_t position() const { return next_; }
   std::size_t remaining() const { return fields_.size() - next_; }
 
-  double number(const std::string& what) {
-    fields_.at(next_, what);
+  double number(const FieldName& name) {
+    if (next_ >= fields_.size()) fields_.at(next_, name.str());
     std::string_view text = fields_.text_view(next_);
     std::string_view digits = text;
     if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-') digits.remove_prefix(1);
@@ -29,7 +52,7 @@ class FieldCursor {
     const auto parsed = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (parsed.ec != std::errc{} || parsed.ptr != digits.data() + digits.size() ||
         !std::isfinite(value)) {
-      fields_.fail(next_, what + ": expected a number, got " + quoted(text));
+      fields_.fail(next_, name.str() + ": expected a number, got " + quoted(text));
     }
     ++next_;
     return value;
@@ -64,18 +87,18 @@ class FieldCursor {
     return announced;
   }
 
-  std::vector<double> numbers(std::size_t n, const std::string& what) {
+  std::vector<double> numbers(std::size_t n, std::string_view what) {
     std::vector<double> values;
     values.reserve(n);
-    for (std::size_t i = 0; i < n; ++i) values.push_back(number(what + " " + std::to_string(i)));
+    for (std::size_t i = 0; i < n; ++i) values.push_back(number(FieldName(what, {}, i)));
     return values;
   }
 
-  CarmenPose pose(const std::string& what) {
+  CarmenPose pose(std::string_view what) {
     CarmenPose pose;
-    pose.x = number(what + " x");
-    pose.y = number(what + " y");
-    pose.theta = number(what + " theta");
+    pose.x = number(FieldName(what, "x"));
+    pose.y = number(FieldName(what, "y"));
+    pose.theta = number(FieldName(what, "theta"));
     return pose;
   }
 

@@ -198,6 +198,12 @@ TEST(CarmenLineTest, ABadNumberNamesItsFieldAndColumn) {
   EXPECT_STREQ(error.what(), "run.log:12:10: odometry theta: expected a number, got 'abc'");
 }
 
+TEST(CarmenLineTest, ABadReadingIsNamedByItsIndex) {
+  // FLASER n r0..r(n-1) laser pose, odometry pose, ipc timestamp, host, logger timestamp
+  EXPECT_EQ(error_of("FLASER 3 1.0 2.0 x 0 0 0 0 0 0 1 h 1").message(), "range 2: expected a number, got 'x'");
+  EXPECT_EQ(error_of("FLASER 2 1.0 2.0 0 0 0 0 0 ? 1 h 1").message(), "odometry theta: expected a number, got '?'");
+}
+
 TEST(CarmenLineTest, NonFiniteNumbersAreErrors) {
   EXPECT_EQ(error_of("ODOM nan 0 0 0 0 0 1 h 1").message(), "odometry x: expected a number, got 'nan'");
   EXPECT_EQ(error_of("ODOM 0 0 0 inf 0 0 1 h 1").message(), "tv: expected a number, got 'inf'");
