@@ -5,7 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <cstdio>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "log/text_log_test_support.hpp"
 #include "protocol/errors.hpp"
@@ -80,6 +84,37 @@ TEST(TextLogWriter, LaserGivesAnglesInRadiansAndRangesInMetresTimesRangeRes) {
   EXPECT_EQ(format_data_line(data_message(kLaserCode, 0, scan), "robot1", 6665, kPlayer15),
             prefix("laser", "00") +
                 "-1.5708 +1.5708 +0.0087 0003 1.000  0 2.500  1 0.040 12 \n");
+}
+
+// The reading loop formats without printf; printf's "%.3f %2d " of
+// mm / 1000.0 is the reference it must match, over the whole range of both
+// wire fields (ranges and range_res are 16-bit, intensity 8-bit).
+TEST(TextLogWriter, ReadingsMatchPrintfOverTheWholeWireRange) {
+  const std::vector<std::uint16_t> range_resolutions{1, 10, 100, 7, 65535};
+  std::uint32_t state = 12345;  // a fixed LCG: the same readings every run
+  for (const std::uint16_t range_res : range_resolutions) {
+    for (int round = 0; round < 200; ++round) {
+      LaserData scan;
+      scan.resolution = 100;
+      scan.range_res = range_res;
+      scan.range_count = 401;
+      std::string expected = prefix("laser", "00") + "+0.0000 +0.0000 +0.0175 0401 ";
+      for (std::size_t i = 0; i < scan.range_count; ++i) {
+        state = state * 1664525u + 1013904223u;
+        // Edges first (0, 999, 1000, 65535), then anything.
+        const std::uint16_t edges[] = {0, 1, 9, 999, 1000, 1001, 65534, 65535};
+        scan.ranges[i] = round == 0 && i < 8 ? edges[i] : static_cast<std::uint16_t>(state >> 16);
+        scan.intensity[i] = static_cast<std::uint8_t>(round == 0 ? i : state >> 8);
+        char reading[64];
+        std::snprintf(reading, sizeof reading, "%.3f %2d ",
+                      static_cast<double>(std::uint32_t{scan.ranges[i]} * range_res) / 1000.0,
+                      static_cast<int>(scan.intensity[i]));
+        expected += reading;
+      }
+      ASSERT_EQ(format_data_line(data_message(kLaserCode, 0, scan), "robot1", 6665, kPlayer15), expected + "\n")
+          << "range_res " << range_res << ", round " << round;
+    }
+  }
 }
 
 TEST(TextLogWriter, LaserWithoutReadingsStillEndsWithASpace) {
