@@ -25,6 +25,10 @@ namespace {
 using Clock = std::chrono::steady_clock;
 using protocol::Message;
 using protocol::MessageType;
+using tools::Formatter;
+using tools::MessageDecoder;
+using tools::TimeColumn;
+using tools::describe_fields;
 
 // A problem to report as "player-cat: <what>" with an exit status.
 class CatFailure : public std::runtime_error {
@@ -81,20 +85,20 @@ class Outputs {
     if (options.csv_dir) open_csv_files(options);
     switch (options.format) {
       case OutputFormat::kText:
-        formatter_ = make_text_formatter(out, options.fields);
+        formatter_ = tools::make_text_formatter(out, options.fields);
         break;
       case OutputFormat::kJson:
-        formatter_ = make_json_formatter(out, options.fields);
+        formatter_ = tools::make_json_formatter(out, options.fields);
         break;
       case OutputFormat::kLog:
-        formatter_ = make_log_formatter(out, options.server);
+        formatter_ = tools::make_log_formatter(out, options.server);
         break;
       case OutputFormat::kCsv: {
         std::map<protocol::DeviceAddress, std::ostream*> sinks;
         for (std::size_t i = 0; i < options.devices.size(); ++i) {
           sinks[options.devices[i]] = files_.empty() ? &out : files_[i].stream.get();
         }
-        formatter_ = make_csv_formatter(std::move(sinks), options.fields);
+        formatter_ = tools::make_csv_formatter(std::move(sinks), options.fields);
         break;
       }
     }
@@ -145,7 +149,7 @@ class Dump {
       : options_(options),
         outputs_(outputs),
         err_(err),
-        decoder_(options.si, err),
+        decoder_("player-cat", options.si, err),
         time_column_(options.time_style) {}
 
   [[nodiscard]] bool done() const {

@@ -11,6 +11,7 @@
 
 #include "client/endpoint.hpp"
 #include "field_path.hpp"
+#include "formatters.hpp"
 #include "exit_status.hpp"
 #include "protocol/constants.hpp"
 #include "protocol/device_address.hpp"
@@ -24,8 +25,10 @@ using tools::kExitUsage;
 using tools::UsageError;
 
 enum class OutputFormat { kText, kJson, kCsv, kLog };
-// -t as in candump: absolute, delta since the previous line, zero-based.
-enum class TimeStyle { kAbsolute, kDelta, kZero };
+// Shared with player-log (tools/common).
+using tools::FieldPath;
+using tools::FieldPathError;
+using tools::TimeStyle;
 
 // The flags as typed; empty strings and nullopt mean "not given".
 struct CommandLine {

@@ -50,12 +50,12 @@ void run_convert(const ConvertOptions& options, std::ostream& out, std::ostream&
   auto& stream = output.stream();
 
   log::PlayerToCarmen to_carmen;
-  cat::MessageDecoder decoder(options.si, err);
-  std::unique_ptr<cat::Formatter> formatter;
+  tools::MessageDecoder decoder("player-log", options.si, err);
+  std::unique_ptr<tools::Formatter> formatter;
   std::optional<protocol::DeviceAddress> csv_device;
   if (target == ConvertTarget::kPlayer) stream << log::log_file_header();
   if (target == ConvertTarget::kCarmen) stream << log::carmen_log_header();
-  if (target == ConvertTarget::kJsonl) formatter = cat::make_json_formatter(stream, {});
+  if (target == ConvertTarget::kJsonl) formatter = tools::make_json_formatter(stream, {});
   std::size_t not_carmen = 0;
 
   const auto write_records = [&] {
@@ -82,7 +82,7 @@ void run_convert(const ConvertOptions& options, std::ostream& out, std::ostream&
         if (target == ConvertTarget::kCsv) {
           if (!csv_device) {
             csv_device = message.device();
-            formatter = cat::make_csv_formatter({{*csv_device, &stream}}, {});
+            formatter = tools::make_csv_formatter({{*csv_device, &stream}}, {});
           } else if (*csv_device != message.device()) {
             throw UsageError("csv holds one device's table, and the log has " + protocol::to_string(*csv_device) +
                              " and " + protocol::to_string(message.device()) +

@@ -4,7 +4,7 @@
 #include <charconv>
 #include <optional>
 
-namespace playerkit::cat {
+namespace playerkit::tools {
 namespace {
 
 std::optional<std::size_t> array_index(const std::string& segment) {
@@ -110,4 +110,4 @@ std::string describe_fields(const nlohmann::json& data) {
   return text;
 }
 
-}  // namespace playerkit::cat
+}  // namespace playerkit::tools

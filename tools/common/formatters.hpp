@@ -1,5 +1,5 @@
 #pragma once
-// How player-cat prints a data message: human text, JSON lines, CSV, or the
+// How player-cat and player-log print a data message: human text, JSON lines, CSV, or the
 // lines of a Player 1.5 text log. Formatters only write; the caller decodes
 // the message, checks --field and watches its streams.
 //
@@ -18,12 +18,14 @@
 #include <string>
 #include <vector>
 
-#include "cat_options.hpp"
 #include "client/endpoint.hpp"
 #include "field_path.hpp"
 #include "protocol/message.hpp"
 
-namespace playerkit::cat {
+namespace playerkit::tools {
+
+// -t as in candump: absolute, delta since the previous line, zero-based.
+enum class TimeStyle { kAbsolute, kDelta, kZero };
 
 // The time a line shows for a message, by -t.
 class TimeColumn {
@@ -79,4 +81,4 @@ std::vector<NamedValue> data_columns(const nlohmann::json& data, const std::vect
 // they must be (RFC 4180), null as an empty cell.
 std::string csv_cell(const nlohmann::json& value);
 
-}  // namespace playerkit::cat
+}  // namespace playerkit::tools

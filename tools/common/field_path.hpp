@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-namespace playerkit::cat {
+namespace playerkit::tools {
 
 class FieldPathError : public std::invalid_argument {
  public:
@@ -54,4 +54,4 @@ std::vector<FieldPath> missing_fields(const nlohmann::json& data, const std::vec
 // What the data offers, for error messages: "count, ranges (array of 361: ranges.0 ... ranges.360)".
 std::string describe_fields(const nlohmann::json& data);
 
-}  // namespace playerkit::cat
+}  // namespace playerkit::tools

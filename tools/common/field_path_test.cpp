@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-namespace playerkit::cat {
+namespace playerkit::tools {
 namespace {
 
 using nlohmann::json;
@@ -83,4 +83,4 @@ TEST(DescribeFieldsTest, ListsKeysWithArrayBounds) {
 }
 
 }  // namespace
-}  // namespace playerkit::cat
+}  // namespace playerkit::tools

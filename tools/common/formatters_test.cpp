@@ -10,7 +10,7 @@
 #include "protocol/messages/laser.hpp"
 #include "protocol/messages/power.hpp"
 
-namespace playerkit::cat {
+namespace playerkit::tools {
 namespace {
 
 using nlohmann::json;
@@ -227,4 +227,4 @@ TEST(LogFormatterTest, PowerAndRoundsASyncLine) {
 }
 
 }  // namespace
-}  // namespace playerkit::cat
+}  // namespace playerkit::tools

@@ -6,7 +6,7 @@
 
 #include "log/text_log_writer.hpp"
 
-namespace playerkit::cat {
+namespace playerkit::tools {
 namespace {
 
 std::string device_name(const protocol::Message& message) { return protocol::to_string(message.device()); }
@@ -218,4 +218,4 @@ std::unique_ptr<Formatter> make_csv_formatter(std::map<protocol::DeviceAddress, 
   return std::make_unique<CsvFormatter>(sinks, std::move(fields));
 }
 
-}  // namespace playerkit::cat
+}  // namespace playerkit::tools

@@ -5,14 +5,14 @@
 #include "protocol/message_json.hpp"
 #include "protocol/si_units.hpp"
 
-namespace playerkit::cat {
+namespace playerkit::tools {
 
 nlohmann::json MessageDecoder::to_json(const protocol::Message& message) {
   try {
     return si_ ? protocol::message_to_si_json(message) : protocol::message_to_json(message);
   } catch (const protocol::DecodeError& e) {
     if (warned_.insert(message.device()).second) {
-      err_ << "player-cat: " << protocol::to_string(message.device()) << ": data does not decode ("
+      err_ << program_ << ": " << protocol::to_string(message.device()) << ": data does not decode ("
            << e.what() << "); printing its raw bytes\n";
     }
     nlohmann::json j;
@@ -26,4 +26,4 @@ nlohmann::json MessageDecoder::to_json(const protocol::Message& message) {
   }
 }
 
-}  // namespace playerkit::cat
+}  // namespace playerkit::tools
