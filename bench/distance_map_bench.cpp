@@ -1,7 +1,8 @@
 // Speed of lib/algorithms/grid on large maps, on one core:
 //   * DistanceMap construction (exact Euclidean transform) on N x N grids,
 //     N = 1000, 2000, 4000 (the 4000 x 4000 figure answers issue 6);
-//   * cast_ray throughput (rays/s) on the 4000 x 4000 map, 30 m rays;
+//   * cast_ray throughput (rays/s) on the 4000 x 4000 map, 30 m rays, and
+//     RangeCaster's on the same rays, from anywhere or from a 2 m cloud;
 //   * OccupancyGridBuilder::add_scan throughput (scans/s, 361 beams).
 //
 //   ./build/bench/distance_map_bench --benchmark_counters_tabular=true
@@ -23,6 +24,7 @@
 #include "algorithms/grid/distance_map.hpp"
 #include "algorithms/grid/occupancy_grid.hpp"
 #include "algorithms/grid/occupancy_grid_builder.hpp"
+#include "algorithms/grid/range_caster.hpp"
 #include "algorithms/grid/ray_cast.hpp"
 
 namespace playerkit::grid {
@@ -69,29 +71,73 @@ void BM_DistanceMap(benchmark::State& state) {
 }
 BENCHMARK(BM_DistanceMap)->ArgName("N")->Arg(1000)->Arg(2000)->Arg(4000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// 4096 random 30 m rays on the 4000 x 4000 map (fixed seed), shared by the
+// cast_ray and RangeCaster benchmarks so their figures compare. Origins
+// either anywhere on the map (every ray starts in cold memory) or in a 2 m
+// square, as a particle cloud's are (the map around it stays in cache).
+struct Rays {
+  std::vector<Eigen::Vector2d> origins;
+  std::vector<double> angles;
+};
+
+const Rays& random_rays(bool in_a_cloud) {
+  const auto make = [](double half_width) {
+    Rays made;
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> coordinate(-half_width, half_width);
+    std::uniform_real_distribution<double> angle(-std::numbers::pi, std::numbers::pi);
+    for (int i = 0; i < 4096; ++i) {
+      made.origins.emplace_back(coordinate(random), coordinate(random));
+      made.angles.push_back(angle(random));
+    }
+    return made;
+  };
+  static const Rays anywhere = make(90.0), cloud = make(1.0);
+  return in_a_cloud ? cloud : anywhere;
+}
+
+// Over exactly the 4096 rays, so the figure does not depend on the
+// iteration count and must match between the two benchmarks.
+template <typename Cast>
+double mean_over_all(const Rays& rays, const Cast& cast) {
+  double total = 0.0;
+  for (std::size_t k = 0; k < rays.angles.size(); ++k) total += cast(k);
+  return total / static_cast<double>(rays.angles.size());
+}
+
 void BM_CastRay(benchmark::State& state) {
   const OccupancyGrid& grid = building(4000);
   const RayStop stop = state.range(0) ? RayStop::occupied : RayStop::occupied_or_unknown;
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> coordinate(-90.0, 90.0);
-  std::uniform_real_distribution<double> angle(-std::numbers::pi, std::numbers::pi);
-  std::vector<Eigen::Vector2d> origins;
-  std::vector<double> angles;
-  for (int i = 0; i < 4096; ++i) {
-    origins.emplace_back(coordinate(random), coordinate(random));
-    angles.push_back(angle(random));
-  }
+  const Rays& rays = random_rays(state.range(1) != 0);
+  const auto cast = [&](std::size_t k) {
+    return cast_ray(grid, rays.origins[k], rays.angles[k], 30.0, stop);
+  };
+  state.counters["mean_range_m"] = mean_over_all(rays, cast);
   std::size_t i = 0;
   double total_range = 0.0;
-  for (auto _ : state) {
-    const std::size_t k = i++ & 4095;
-    total_range += cast_ray(grid, origins[k], angles[k], 30.0, stop);
-  }
+  for (auto _ : state) total_range += cast(i++ & 4095);
   benchmark::DoNotOptimize(total_range);
   state.SetItemsProcessed(state.iterations());
-  state.counters["mean_range_m"] = total_range / static_cast<double>(state.iterations());
 }
-BENCHMARK(BM_CastRay)->ArgName("stop_on_occupied_only")->Arg(0)->Arg(1);
+BENCHMARK(BM_CastRay)->ArgNames({"stop_on_occupied_only", "cloud"})->ArgsProduct({{0, 1}, {0, 1}});
+
+// The same rays by ray marching; mean_range_m must equal BM_CastRay's (to
+// the printed digits).
+// Building the caster (a distance transform) is outside the timed loop.
+void BM_RangeCaster(benchmark::State& state) {
+  const OccupancyGrid& grid = building(4000);
+  const RayStop stop = state.range(0) ? RayStop::occupied : RayStop::occupied_or_unknown;
+  const RangeCaster caster(grid, stop);
+  const Rays& rays = random_rays(state.range(1) != 0);
+  const auto cast = [&](std::size_t k) { return caster.range(rays.origins[k], rays.angles[k], 30.0); };
+  state.counters["mean_range_m"] = mean_over_all(rays, cast);
+  std::size_t i = 0;
+  double total_range = 0.0;
+  for (auto _ : state) total_range += cast(i++ & 4095);
+  benchmark::DoNotOptimize(total_range);
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_RangeCaster)->ArgNames({"stop_on_occupied_only", "cloud"})->ArgsProduct({{0, 1}, {0, 1}});
 
 void BM_BuilderAddScan(benchmark::State& state) {
   const OccupancyGrid& grid = building(2000);  // 100 m x 100 m

@@ -28,7 +28,6 @@ AmclFilter::AmclFilter(AmclParameters parameters, std::shared_ptr<const grid::Oc
       map_(require_map(std::move(map))),
       rng_(seed),
       free_space_(*map_),
-      beam_model_(map_),
       recovery_(parameters_.alpha_slow, parameters_.alpha_fast) {
   if (free_space_.empty()) throw std::invalid_argument("AmclFilter: the map has no free cell");
   set_global();
@@ -67,6 +66,11 @@ LikelihoodFieldModel& AmclFilter::likelihood_field() {
         std::make_unique<LikelihoodFieldModel>(*map_, parameters_.likelihood_max_distance);
   }
   return *likelihood_field_;
+}
+
+BeamModel& AmclFilter::beam_model() {
+  if (!beam_model_) beam_model_ = std::make_unique<BeamModel>(map_);
+  return *beam_model_;
 }
 
 bool AmclFilter::update(const geometry::Pose2& odometry, const LaserScan* scan) {
@@ -113,7 +117,7 @@ void AmclFilter::laser_update(const LaserScan& scan) {
   log_likelihoods_.resize(particles_.size());
   std::size_t informative_beams = beams_.size();
   if (parameters_.laser_model == LaserModelType::beam) {
-    beam_model_.log_likelihoods(particles_, beams_, settings, log_likelihoods_);
+    beam_model().log_likelihoods(particles_, beams_, settings, log_likelihoods_);
   } else {
     informative_beams = static_cast<std::size_t>(
         std::count(beams_.no_return.begin(), beams_.no_return.end(), 0));

@@ -73,13 +73,14 @@ class AmclFilter {
   void resample();
   void refresh_hypotheses();
   LikelihoodFieldModel& likelihood_field();
+  BeamModel& beam_model();
   void restart();
 
   AmclParameters parameters_;
   std::shared_ptr<const grid::OccupancyGrid> map_;
   std::mt19937_64 rng_;
   FreeSpaceSampler free_space_;
-  BeamModel beam_model_;
+  std::unique_ptr<BeamModel> beam_model_;  // built on first use
   std::unique_ptr<LikelihoodFieldModel> likelihood_field_;  // built on first use
   AugmentedRecovery recovery_;
   AdaptiveResampler resampler_;

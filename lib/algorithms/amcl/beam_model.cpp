@@ -1,7 +1,5 @@
 #include "algorithms/amcl/beam_model.hpp"
 
-#include "algorithms/grid/ray_cast.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -9,9 +7,17 @@
 
 namespace playerkit::amcl {
 
-BeamModel::BeamModel(std::shared_ptr<const grid::OccupancyGrid> map) : map_(std::move(map)) {
-  if (!map_) throw std::invalid_argument("BeamModel: no map");
+namespace {
+
+const grid::OccupancyGrid& require_map(const std::shared_ptr<const grid::OccupancyGrid>& map) {
+  if (!map) throw std::invalid_argument("BeamModel: no map");
+  return *map;
 }
+
+}  // namespace
+
+BeamModel::BeamModel(std::shared_ptr<const grid::OccupancyGrid> map)
+    : caster_(require_map(map), grid::RayStop::occupied_or_unknown) {}
 
 double BeamModel::log_beam_likelihood(double range, bool no_return, double expected,
                                       double max_range, const LaserModelSettings& settings) {
@@ -42,8 +48,7 @@ void BeamModel::log_likelihoods(std::span<const Particle> particles, const Prepa
     const double yaw = particles[i].pose.yaw;
     double sum = 0.0;
     for (std::size_t b = 0; b < beams.size(); ++b) {
-      const double expected = grid::cast_ray(*map_, origin, yaw + beams.robot_angle[b],
-                                             beams.max_range, grid::RayStop::occupied_or_unknown);
+      const double expected = caster_.range(origin, yaw + beams.robot_angle[b], beams.max_range);
       sum += log_beam_likelihood(beams.ranges[b], beams.no_return[b] != 0, expected,
                                  beams.max_range, settings);
     }

@@ -9,11 +9,16 @@
 //   rand  z_rand  / max_range, z < max_range     everything else
 // A no-return reading thus scores high where the map has nothing within
 // range and only z_max (not a miss) where it has.
+//
+// Expected ranges come from a grid::RangeCaster (cast_ray's answers by ray
+// marching), whose distance transform makes construction cost about as much
+// as a likelihood field's: build one per map.
 
 #include "algorithms/amcl/laser_model_settings.hpp"
 #include "algorithms/amcl/laser_scan.hpp"
 #include "algorithms/amcl/particle_set.hpp"
 #include "algorithms/grid/occupancy_grid.hpp"
+#include "algorithms/grid/range_caster.hpp"
 
 #include <memory>
 #include <span>
@@ -22,6 +27,7 @@ namespace playerkit::amcl {
 
 class BeamModel {
  public:
+  // Throws std::invalid_argument for a null map. The map is not kept.
   explicit BeamModel(std::shared_ptr<const grid::OccupancyGrid> map);
 
   void log_likelihoods(std::span<const Particle> particles, const PreparedBeams& beams,
@@ -33,7 +39,7 @@ class BeamModel {
                                     double max_range, const LaserModelSettings& settings);
 
  private:
-  std::shared_ptr<const grid::OccupancyGrid> map_;
+  grid::RangeCaster caster_;  // stops where Player 1.5's map_calc_range does: at anything not free
 };
 
 }  // namespace playerkit::amcl

@@ -72,7 +72,7 @@ class LowerEnvelope {
 
 }  // namespace
 
-DistanceMap::DistanceMap(const OccupancyGrid& grid, double max_distance)
+DistanceMap::DistanceMap(const OccupancyGrid& grid, double max_distance, DistanceTo sources)
     : width_(grid.width()),
       height_(grid.height()),
       resolution_(grid.resolution()),
@@ -93,16 +93,20 @@ DistanceMap::DistanceMap(const OccupancyGrid& grid, double max_distance)
   const auto h = static_cast<std::size_t>(height_);
   std::vector<std::int32_t> column_distance(w * h);
 
-  // Upward sweep: distance to the nearest occupied cell at or below, per column.
+  const auto is_source = [sources](CellState state) {
+    return sources == DistanceTo::occupied ? state == CellState::occupied : state != CellState::free;
+  };
+
+  // Upward sweep: distance to the nearest source cell at or below, per column.
   std::vector<std::int32_t> running(w, cap);
   for (std::size_t row = 0; row < h; ++row) {
     for (std::size_t col = 0; col < w; ++col) {
-      const bool occupied = grid.at(static_cast<int>(col), static_cast<int>(row)) == CellState::occupied;
-      running[col] = occupied ? 0 : std::min(running[col] + 1, cap);
+      const bool source = is_source(grid.at(static_cast<int>(col), static_cast<int>(row)));
+      running[col] = source ? 0 : std::min(running[col] + 1, cap);
       column_distance[row * w + col] = running[col];
     }
   }
-  // Downward sweep: nearest occupied cell at or above, keeping the smaller.
+  // Downward sweep: nearest source cell at or above, keeping the smaller.
   std::fill(running.begin(), running.end(), cap);
   for (std::size_t row = h; row-- > 0;) {
     for (std::size_t col = 0; col < w; ++col) {
@@ -127,11 +131,6 @@ DistanceMap::DistanceMap(const OccupancyGrid& grid, double max_distance)
       distances_[row * w + col] = std::min(static_cast<float>(metres), max_distance_f);
     }
   }
-}
-
-double DistanceMap::at(int col, int row) const {
-  return distances_[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
-                    static_cast<std::size_t>(col)];
 }
 
 double DistanceMap::at_world(const Eigen::Vector2d& point) const {

@@ -11,11 +11,15 @@ namespace playerkit::grid {
 namespace {
 
 // The definition, O(cells x obstacles).
-double brute_force_distance(const OccupancyGrid& grid, int col, int row, double max_distance) {
+double brute_force_distance(const OccupancyGrid& grid, int col, int row, double max_distance,
+                            DistanceTo sources = DistanceTo::occupied) {
   double best_squared = std::numeric_limits<double>::infinity();
   for (int r = 0; r < grid.height(); ++r) {
     for (int c = 0; c < grid.width(); ++c) {
-      if (grid.at(c, r) != CellState::occupied) continue;
+      const CellState state = grid.at(c, r);
+      const bool source = sources == DistanceTo::occupied ? state == CellState::occupied
+                                                          : state != CellState::free;
+      if (!source) continue;
       const double dc = c - col, dr = r - row;
       best_squared = std::min(best_squared, dc * dc + dr * dr);
     }
@@ -62,6 +66,45 @@ TEST(DistanceMap, MatchesBruteForceOnRandomGrids) {
       }
     }
   }
+}
+
+TEST(DistanceMap, UnknownCellsAreSourcesOnlyWhenAsked) {
+  // Mostly free with a few obstacles and a few unknown cells, so the two
+  // modes give different answers almost everywhere.
+  std::mt19937 random(5);
+  std::discrete_distribution<int> state({0.96, 0.02, 0.02});  // free, unknown, occupied
+  OccupancyGrid grid(41, 29, 0.1, {0.0, 0.0});
+  for (int row = 0; row < grid.height(); ++row) {
+    for (int col = 0; col < grid.width(); ++col) grid.set(col, row, static_cast<CellState>(state(random) - 1));
+  }
+  const DistanceMap to_occupied(grid, 100.0);
+  const DistanceMap to_occupied_explicit(grid, 100.0, DistanceTo::occupied);
+  const DistanceMap to_not_free(grid, 100.0, DistanceTo::occupied_or_unknown);
+  int unknown_cells = 0, differing = 0;
+  for (int row = 0; row < grid.height(); ++row) {
+    for (int col = 0; col < grid.width(); ++col) {
+      EXPECT_EQ(to_occupied.at(col, row), as_stored(brute_force_distance(grid, col, row, 100.0)));
+      EXPECT_EQ(to_occupied_explicit.at(col, row), to_occupied.at(col, row));
+      EXPECT_EQ(to_not_free.at(col, row),
+                as_stored(brute_force_distance(grid, col, row, 100.0, DistanceTo::occupied_or_unknown)));
+      if (grid.at(col, row) == CellState::unknown) {
+        ++unknown_cells;
+        EXPECT_EQ(to_not_free.at(col, row), 0.0);
+        EXPECT_GT(to_occupied.at(col, row), 0.0);
+      }
+      differing += to_not_free.at(col, row) < to_occupied.at(col, row);
+    }
+  }
+  EXPECT_GT(unknown_cells, 10);
+  EXPECT_GT(differing, 200);  // the unknown cells really changed the field
+}
+
+TEST(DistanceMap, AllUnknownMapIsZeroOnlyInTheNotFreeMode) {
+  const OccupancyGrid grid(6, 4, 0.5, {0, 0}, CellState::unknown);
+  const DistanceMap to_occupied(grid, 3.0);
+  const DistanceMap to_not_free(grid, 3.0, DistanceTo::occupied_or_unknown);
+  EXPECT_DOUBLE_EQ(to_occupied.at(2, 2), 3.0);
+  EXPECT_DOUBLE_EQ(to_not_free.at(2, 2), 0.0);
 }
 
 TEST(DistanceMap, CapsAtMaxDistance) {
