@@ -3,9 +3,12 @@
 # make a map from its corrected poses, degrade its odometry with `perturb`
 # (seed 1, default Pioneer-like model), then localize with each laser model
 # from the true initial pose (tracking) and from nothing (--global, augmented
-# MCL on), and evaluate against the corrected poses. Prints a Markdown table.
+# MCL on), and evaluate against the corrected poses. Prints a Markdown table,
+# then a second one: likelihood-field tracking and global starts over perturb
+# seeds 1-6 (each run with the filter seeded alike), to show how much the
+# figures move with the odometry's luck.
 #
-#   bench/amcl_accuracy.sh [BUILD_DIR]        (default: build)
+#   bench/amcl_accuracy.sh [BUILD_DIR]        (default: build)    about 80 s
 set -euo pipefail
 repo="$(cd "$(dirname "$0")/.." && pwd)"
 build="${1:-$repo/build}"
@@ -17,7 +20,7 @@ field() { python3 -c 'import json,sys; d=json.load(sys.stdin); v=d
 for k in sys.argv[1].split("."): v=v[k] if v is not None else None
 print("-" if v is None else (round(v,3) if isinstance(v,float) else v))' "$1"; }
 
-echo "| log | start | model | position RMSE (m) | max (m) | heading RMSE (deg) | converged after | lost | scans | wall (s) | real-time factor |"
+echo "| log | start | model | position RMSE (m) | max (m) | heading RMSE (deg) | converged after | lost (longest) | scans | wall (s) | real-time factor |"
 echo "|---|---|---|---|---|---|---|---|---|---|---|"
 for name in intel-corrected freiburg-079-corrected; do
   log="$repo/tests/data/radish/$name.log.gz"
@@ -38,7 +41,38 @@ for name in intel-corrected freiburg-079-corrected; do
     heading="$(python3 -c 'import json,sys,math; d=json.load(open(sys.argv[1]))["after_convergence"]; print(round(math.degrees(d["heading_rmse_rad"]),2) if d["count"] else "-")' "$work/eval.json")"
     conv_t="$(field convergence_time_s <"$work/eval.json")"
     conv_d="$(field convergence_distance_m <"$work/eval.json")"
-    lost="$(field lost_episodes <"$work/eval.json")"
+    lost="$(field lost_episodes <"$work/eval.json") ($(field longest_lost_s <"$work/eval.json") s)"
     echo "| $name | $1 | $2 | $rmse | $max | $heading | ${conv_t} s, ${conv_d} m | $lost | $scans | $wall | ${factor}x |"
+  done
+done
+
+echo
+echo "| log | start | seeds | position RMSE (m), range | worst max (m) | heading RMSE (deg), range | converged after (m), range | lost, total | longest lost (s) |"
+echo "|---|---|---|---|---|---|---|---|---|"
+for name in intel-corrected freiburg-079-corrected; do
+  log="$repo/tests/data/radish/$name.log.gz"
+  for start in tracking global; do
+    for seed in 1 2 3 4 5 6; do
+      "$offline" perturb "$log" -o "$work/odom.log" --seed "$seed" 2>/dev/null
+      start_args=(--init-pose truth)
+      [ "$start" = global ] && start_args=(--global --alpha-slow 0.001 --alpha-fast 0.1)
+      "$offline" localize "$work/odom.log" --map "$work/$name.yaml" "${start_args[@]}" --seed "$seed" \
+        -o "$work/estimate.csv" 2>/dev/null
+      "$offline" eval "$work/estimate.csv" --truth "$log" --json >"$work/eval-$seed.json"
+    done
+    python3 - "$name" "$start" "$work" <<'PY'
+import json, math, sys
+name, start, work = sys.argv[1:4]
+runs = [json.load(open(f"{work}/eval-{seed}.json")) for seed in range(1, 7)]
+after = [r["after_convergence"] for r in runs if r["converged"]]
+span = lambda values, digits: f"{min(values):.{digits}f}-{max(values):.{digits}f}" if values else "-"
+print(f"| {name} | {start} | 1-6 ({len(after)} converged) "
+      f"| {span([a['position_rmse_m'] for a in after], 3)} "
+      f"| {max((a['position_max_m'] for a in after), default=float('nan')):.3f} "
+      f"| {span([math.degrees(a['heading_rmse_rad']) for a in after], 2)} "
+      f"| {span([r['convergence_distance_m'] for r in runs if r['converged']], 1)} "
+      f"| {sum(r['lost_episodes'] for r in runs)} "
+      f"| {max(r['longest_lost_s'] for r in runs):.1f} |")
+PY
   done
 done
