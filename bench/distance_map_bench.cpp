@@ -96,8 +96,6 @@ const Rays& random_rays(bool in_a_cloud) {
   return in_a_cloud ? cloud : anywhere;
 }
 
-// Over exactly the 4096 rays, so the figure does not depend on the
-// iteration count and must match between the two benchmarks.
 template <typename Cast>
 double mean_over_all(const Rays& rays, const Cast& cast) {
   double total = 0.0;
@@ -105,13 +103,10 @@ double mean_over_all(const Rays& rays, const Cast& cast) {
   return total / static_cast<double>(rays.angles.size());
 }
 
-void BM_CastRay(benchmark::State& state) {
-  const OccupancyGrid& grid = building(4000);
-  const RayStop stop = state.range(0) ? RayStop::occupied : RayStop::occupied_or_unknown;
-  const Rays& rays = random_rays(state.range(1) != 0);
-  const auto cast = [&](std::size_t k) {
-    return cast_ray(grid, rays.origins[k], rays.angles[k], 30.0, stop);
-  };
+// Both ray benchmarks: the same 4096 rays over and over, and their mean range
+// as a counter, which must be equal between the two (to the printed digits).
+template <typename Cast>
+void time_rays(benchmark::State& state, const Rays& rays, const Cast& cast) {
   state.counters["mean_range_m"] = mean_over_all(rays, cast);
   std::size_t i = 0;
   double total_range = 0.0;
@@ -119,23 +114,23 @@ void BM_CastRay(benchmark::State& state) {
   benchmark::DoNotOptimize(total_range);
   state.SetItemsProcessed(state.iterations());
 }
+
+void BM_CastRay(benchmark::State& state) {
+  const OccupancyGrid& grid = building(4000);
+  const RayStop stop = state.range(0) ? RayStop::occupied : RayStop::occupied_or_unknown;
+  const Rays& rays = random_rays(state.range(1) != 0);
+  time_rays(state, rays, [&](std::size_t k) { return cast_ray(grid, rays.origins[k], rays.angles[k], 30.0, stop); });
+}
 BENCHMARK(BM_CastRay)->ArgNames({"stop_on_occupied_only", "cloud"})->ArgsProduct({{0, 1}, {0, 1}});
 
-// The same rays by ray marching; mean_range_m must equal BM_CastRay's (to
-// the printed digits).
-// Building the caster (a distance transform) is outside the timed loop.
+// The same rays by ray marching. Building the caster (a distance transform)
+// is outside the timed loop.
 void BM_RangeCaster(benchmark::State& state) {
   const OccupancyGrid& grid = building(4000);
   const RayStop stop = state.range(0) ? RayStop::occupied : RayStop::occupied_or_unknown;
   const RangeCaster caster(grid, stop);
   const Rays& rays = random_rays(state.range(1) != 0);
-  const auto cast = [&](std::size_t k) { return caster.range(rays.origins[k], rays.angles[k], 30.0); };
-  state.counters["mean_range_m"] = mean_over_all(rays, cast);
-  std::size_t i = 0;
-  double total_range = 0.0;
-  for (auto _ : state) total_range += cast(i++ & 4095);
-  benchmark::DoNotOptimize(total_range);
-  state.SetItemsProcessed(state.iterations());
+  time_rays(state, rays, [&](std::size_t k) { return caster.range(rays.origins[k], rays.angles[k], 30.0); });
 }
 BENCHMARK(BM_RangeCaster)->ArgNames({"stop_on_occupied_only", "cloud"})->ArgsProduct({{0, 1}, {0, 1}});
 
