@@ -117,6 +117,12 @@ bool ReplaySession::replay_file(const std::stop_token& stop, std::uint64_t& serv
     }
     if (options_.duration && log_us > pass_start_log &&
         static_cast<double>(log_us - pass_start_log) > *options_.duration * 1e6) {
+      // A pass lasts its whole window, not until its last line: the next one
+      // starts `duration` after this one did, however sparse the log is there.
+      const auto window = static_cast<std::uint64_t>(*options_.duration * 1e6);
+      if (!options_.burst && !timer_->wait_until(pass_start_wall + scaled(window, options_.speed), stop)) {
+        return false;
+      }
       break;
     }
     ++served;
