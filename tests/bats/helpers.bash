@@ -42,6 +42,19 @@ start_daemon() {
   return 1
 }
 
+# kill_left_running PID...: a test's teardown; kills whatever of these is
+# still running (empty arguments are skipped), so a failed test leaves no
+# server behind to hold a port or the next test's files.
+kill_left_running() {
+  local pid
+  for pid in "$@"; do
+    if [ -n "$pid" ] && kill -0 "$pid" 2>/dev/null; then
+      kill -KILL "$pid"
+      wait "$pid" 2>/dev/null || true
+    fi
+  done
+}
+
 # wait_for_exit PID: waits at most 10 s; sets exit_status (or fails).
 wait_for_exit() {
   local pid="$1"

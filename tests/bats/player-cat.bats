@@ -11,12 +11,7 @@ setup() {
 }
 
 teardown() {
-  for pid in "${cat_pid:-}" "${server_pid:-}" "${helper_pid:-}"; do
-    if [ -n "$pid" ] && kill -0 "$pid" 2>/dev/null; then
-      kill -KILL "$pid"
-      wait "$pid" 2>/dev/null || true
-    fi
-  done
+  kill_left_running "${cat_pid:-}" "${server_pid:-}" "${helper_pid:-}"
 }
 
 serve_battery() {

@@ -13,12 +13,7 @@ setup() {
 }
 
 teardown() {
-  for pid in "${record_pid:-}" "${server_pid:-}"; do
-    if [ -n "$pid" ] && kill -0 "$pid" 2>/dev/null; then
-      kill -KILL "$pid"
-      wait "$pid" 2>/dev/null || true
-    fi
-  done
+  kill_left_running "${record_pid:-}" "${server_pid:-}"
 }
 
 serve_battery() {

@@ -23,12 +23,7 @@ EOF
 }
 
 teardown() {
-  for pid in "${helper_pids[@]}" ${server_pid:-}; do
-    if kill -0 "$pid" 2>/dev/null; then
-      kill -KILL "$pid"
-      wait "$pid" 2>/dev/null || true
-    fi
-  done
+  kill_left_running "${helper_pids[@]}" "${server_pid:-}"
 }
 
 serve() {

@@ -19,10 +19,7 @@ LOG
 }
 
 teardown() {
-  if [ -n "${server_pid:-}" ] && kill -0 "$server_pid" 2>/dev/null; then
-    kill -KILL "$server_pid"
-    wait "$server_pid" 2>/dev/null || true
-  fi
+  kill_left_running "${server_pid:-}"
 }
 
 @test "-r replays every logged sample to a client with its logged time" {

@@ -9,10 +9,7 @@ setup() {
 }
 
 teardown() {
-  if [ -n "${server_pid:-}" ] && kill -0 "$server_pid" 2>/dev/null; then
-    kill -KILL "$server_pid"
-    wait "$server_pid" 2>/dev/null || true
-  fi
+  kill_left_running "${server_pid:-}"
 }
 
 @test "SIGTERM shuts the server down cleanly with exit 0" {
