@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/device.hpp"
+#include "core/shared_connection.hpp"
 
 namespace playerkit::core {
 
@@ -38,7 +39,12 @@ class DeviceTable {
   // built on other devices go before the devices they use).
   void shutdown_all();
 
+  // The hardware connections the drivers of these devices share.
+  [[nodiscard]] ConnectionPool& connections() { return connections_; }
+
  private:
+  // Before devices_, so that it outlives every driver holding a connection.
+  ConnectionPool connections_;
   std::vector<std::unique_ptr<Device>> devices_;
 };
 

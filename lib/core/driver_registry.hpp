@@ -16,6 +16,7 @@
 #include "core/device.hpp"
 #include "core/driver.hpp"
 #include "core/logger.hpp"
+#include "core/shared_connection.hpp"
 
 namespace playerkit::core {
 
@@ -30,6 +31,8 @@ struct DriverContext {
   DeviceTable& devices;  // other devices, for drivers built on them (amcl, writelog)
   const Clock& clock;
   Logger& logger;
+  // Connections shared by the devices of one robot (shared_connection.hpp).
+  ConnectionPool& connections;
 };
 
 using DriverFactory = std::function<std::unique_ptr<Driver>(const DriverContext&)>;
@@ -44,6 +47,8 @@ struct DriverSpec {
   // Drivers of several interfaces whose devices need other queues on some of
   // them (passthrough: comms messages queue, laser scans do not).
   std::map<std::uint16_t, DeviceLimits> interface_limits{};
+  // The built-in family it comes from ("p2os", "logfile"); empty for plugins.
+  std::string family{};
 
   // `limits`, unless interface_limits says otherwise for this interface.
   [[nodiscard]] DeviceLimits limits_for(std::uint16_t interface) const;

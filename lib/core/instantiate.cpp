@@ -48,7 +48,7 @@ void instantiate_devices(const config::ConfigFile& config, const DriverRegistry&
     const DriverContext context{config,     config.section(declaration.section),
                                 key,        declaration.robot_name,
                                 devices,    clock,
-                                logger};
+                                logger,     devices.connections()};
     std::unique_ptr<Driver> driver;
     try {
       driver = spec->factory(context);

@@ -1,23 +1,10 @@
 #include "drivers/builtin.hpp"
 
-#include "drivers/amcl/amcl_driver.hpp"
-#include "drivers/comms/udpbroadcast_driver.hpp"
-#include "drivers/logfile/readlog_driver.hpp"
-#include "drivers/logfile/writelog_driver.hpp"
-#include "drivers/mcom/lifomcom_driver.hpp"
-#include "drivers/null/null_driver.hpp"
-#include "drivers/passthrough/passthrough_driver.hpp"
-
 namespace playerkit::drivers {
 
-void register_builtin_drivers(core::DriverRegistry& registry) {
-  registry.add(null_driver_spec());
-  registry.add(lifomcom_driver_spec());
-  registry.add(udpbroadcast_driver_spec());
-  registry.add(passthrough_driver_spec());
-  registry.add(readlog_driver_spec());
-  registry.add(writelog_driver_spec());
-  registry.add(amcl_driver_spec());
-}
+// builtin_drivers.cpp, generated from the families built.
+void register_built_families(core::DriverRegistry& registry);
+
+void register_builtin_drivers(core::DriverRegistry& registry) { register_built_families(registry); }
 
 }  // namespace playerkit::drivers

@@ -6,7 +6,8 @@
 
 namespace playerkit::drivers {
 
-// Adds null, lifomcom and udpbroadcast.
+// Adds every driver of every family built (lib/drivers/<family>, each left
+// out with -DPLAYERKIT_DRIVERS_<FAMILY>=OFF), each spec's `family` set.
 void register_builtin_drivers(core::DriverRegistry& registry);
 
 }  // namespace playerkit::drivers

@@ -23,8 +23,19 @@ TEST(BuiltinDrivers, RegistersEveryDriverSortedByName) {
     EXPECT_EQ(spec->summary.find('\n'), std::string::npos) << spec->name;  // one line
     EXPECT_TRUE(static_cast<bool>(spec->factory)) << spec->name;
     EXPECT_GE(spec->limits.request_queue, 1u) << spec->name;
+    EXPECT_FALSE(spec->family.empty()) << spec->name;  // generated from the families built
   }
   EXPECT_EQ(names, (std::vector<std::string>{"amcl", "lifomcom", "null", "passthrough", "readlog", "udpbroadcast", "writelog"}));
+}
+
+TEST(BuiltinDrivers, EachDriverNamesItsFamily) {
+  core::DriverRegistry registry;
+  register_builtin_drivers(registry);
+  ASSERT_NE(registry.find("readlog"), nullptr);
+  EXPECT_EQ(registry.find("readlog")->family, "logfile");
+  EXPECT_EQ(registry.find("writelog")->family, "logfile");
+  EXPECT_EQ(registry.find("amcl")->family, "amcl");
+  EXPECT_EQ(registry.find("lifomcom")->family, "mcom");
 }
 
 TEST(BuiltinDrivers, InterfacesAndAccessAsIn15) {

@@ -43,8 +43,8 @@ AmclDriver::AmclDriver(AmclOptions options, core::DeviceTable& devices)
 
 AmclDriver::~AmclDriver() {
   // Normally close() has run; never leave a listener pointing at a dead driver.
-  if (position_ != nullptr) position_->remove_listener(this);
-  if (laser_ != nullptr) laser_->remove_listener(this);
+  laser_subscription_.reset();
+  position_subscription_.reset();
 }
 
 void AmclDriver::open() {
@@ -71,29 +71,18 @@ void AmclDriver::open() {
     dropped_scans_ = 0;
     accepting_ = true;
   }
-  // Listen before subscribing: a source may publish from its setup() on.
-  position->add_listener(this);
   position_ = position;
-  if (!position->subscribe()) {
-    position->remove_listener(this);
-    position_ = nullptr;
-    throw core::DriverError(device().name() + ": " + position->name() + " could not be set up");
-  }
-  laser->add_listener(this);
   laser_ = laser;
-  if (!laser->subscribe()) {
-    laser->remove_listener(this);
-    laser_ = nullptr;
-    position_->remove_listener(this);
-    position_->unsubscribe();
-    position_ = nullptr;
-    throw core::DriverError(device().name() + ": " + laser->name() + " could not be set up");
-  }
+  // If the laser refuses, the odometry subscription is undone on the way out.
+  core::SourceSubscription odometry(*position, this, device().name());
+  core::SourceSubscription scans(*laser, this, device().name());
+  position_subscription_ = std::move(odometry);
+  laser_subscription_ = std::move(scans);
 }
 
 void AmclDriver::close() {
-  position_->remove_listener(this);
-  laser_->remove_listener(this);
+  position_subscription_.stop_listening();
+  laser_subscription_.stop_listening();
   {
     std::lock_guard lock(queue_mutex_);
     accepting_ = false;
@@ -102,10 +91,8 @@ void AmclDriver::close() {
                                 " scans dropped: the filter could not keep up");
     }
   }
-  laser_->unsubscribe();
-  position_->unsubscribe();
-  laser_ = nullptr;
-  position_ = nullptr;
+  laser_subscription_.reset();
+  position_subscription_.reset();
 }
 
 void AmclDriver::start_filter() {

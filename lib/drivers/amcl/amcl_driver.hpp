@@ -31,6 +31,7 @@
 #include "core/device_table.hpp"
 #include "core/driver.hpp"
 #include "core/driver_registry.hpp"
+#include "core/source_subscription.hpp"
 #include "drivers/amcl/amcl_options.hpp"
 
 namespace playerkit::drivers {
@@ -85,7 +86,9 @@ class AmclDriver final : public core::ThreadedDriver, private core::DeviceListen
 
   const AmclOptions options_;
   core::DeviceTable& devices_;
-  core::Device* position_ = nullptr;  // subscribed between open() and close()
+  // The sources, to tell their notifications apart; set before subscribing,
+  // since a source may publish from its setup() on.
+  core::Device* position_ = nullptr;
   core::Device* laser_ = nullptr;
 
   // The driver's thread only (requests are answered there too).
@@ -102,6 +105,11 @@ class AmclDriver final : public core::ThreadedDriver, private core::DeviceListen
   std::size_t dropped_scans_ = 0;
   // Callbacks may still arrive after remove_listener(); close() clears this first.
   bool accepting_ = false;
+
+  // Held between open() and close(). Last, so they go first on destruction:
+  // no notification can reach members already destroyed.
+  core::SourceSubscription position_subscription_;
+  core::SourceSubscription laser_subscription_;
 };
 
 core::DriverSpec amcl_driver_spec();

@@ -45,7 +45,7 @@ WritelogDriver::WritelogDriver(std::string filename, std::vector<core::DeviceKey
 
 WritelogDriver::~WritelogDriver() {
   // Normally close() has run; never leave a listener pointing at a dead driver.
-  for (core::Device* source : sources_) source->remove_listener(this);
+  sources_.clear();
 }
 
 void WritelogDriver::open() {
@@ -72,37 +72,29 @@ void WritelogDriver::open() {
   }
   // Listen before subscribing: a source may publish from its setup() on
   // (readlog sends its first line at once), and that sample must go in too.
-  for (core::Device* source : found) {
-    source->add_listener(this);
-    sources_.push_back(source);
-    if (!source->subscribe()) {
-      sources_.pop_back();
-      source->remove_listener(this);
-      for (core::Device* held : sources_) held->remove_listener(this);
-      release_sources();
-      out_.close();
-      throw core::DriverError("writelog: " + source->name() + " could not be set up");
-    }
+  std::vector<core::SourceSubscription> subscribed;
+  try {
+    core::DeviceListener* listener = this;  // a private base: convert here
+    for (core::Device* source : found) subscribed.emplace_back(*source, listener, "writelog");
+  } catch (const core::DriverError&) {
+    out_.close();
+    throw;  // `subscribed` undoes the ones taken
   }
+  sources_ = std::move(subscribed);
 }
 
 void WritelogDriver::close() {
   // Stop listening first: after this, everything received is in pending_.
-  for (core::Device* source : sources_) source->remove_listener(this);
+  for (core::SourceSubscription& source : sources_) source.stop_listening();
   {
     // A sample whose notification is still on its way is already in its
     // device: take it from there.
     std::lock_guard lock(pending_mutex_);
     accepting_ = false;
-    for (const core::Device* source : sources_) collect_new_samples(*source);
+    for (const core::SourceSubscription& source : sources_) collect_new_samples(*source.device());
   }
   write_pending();
   out_.close();
-  release_sources();
-}
-
-void WritelogDriver::release_sources() {
-  for (core::Device* source : sources_) source->unsubscribe();
   sources_.clear();
 }
 

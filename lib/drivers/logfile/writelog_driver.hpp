@@ -27,6 +27,7 @@
 #include "core/device_table.hpp"
 #include "core/driver.hpp"
 #include "core/driver_registry.hpp"
+#include "core/source_subscription.hpp"
 
 namespace playerkit::drivers {
 
@@ -54,7 +55,6 @@ class WritelogDriver final : public core::ThreadedDriver, private core::DeviceLi
 
   // Queues the samples of `source` not queued yet. Holds pending_mutex_.
   void collect_new_samples(const core::Device& source);
-  void release_sources();
   void write_pending();
   void write_sync_if_due();
   void write_line(const std::string& line);
@@ -64,7 +64,6 @@ class WritelogDriver final : public core::ThreadedDriver, private core::DeviceLi
   core::DeviceTable& devices_;
   const std::string host_;
 
-  std::vector<core::Device*> sources_;  // subscribed, between open() and close()
   std::ofstream out_;
   bool write_failed_ = false;
   std::uint64_t last_sync_us_ = 0;
@@ -76,6 +75,10 @@ class WritelogDriver final : public core::ThreadedDriver, private core::DeviceLi
   // Under pending_mutex_. A callback may still arrive after remove_listener()
   // (Device calls listeners outside its lock); close() clears this first.
   bool accepting_ = false;
+
+  // Subscribed between open() and close(). Last, so they go first on
+  // destruction: no notification can reach members already destroyed.
+  std::vector<core::SourceSubscription> sources_;
 };
 
 // The host name written in log lines: this machine's, or "localhost" when it
