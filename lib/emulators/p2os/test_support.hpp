@@ -104,6 +104,16 @@ class Host {
     return hw::decode_sync2_reply(packets[2]);
   }
 
+  // Sends `command` every 100 ms for `span`, as the 1.5 driver sends its
+  // motor command every cycle.
+  void keep_sending(const hw::Command& command, Duration span) {
+    const Duration end = now_ + span;
+    for (int guard = 0; guard < 1'000'000 && now_ < end; ++guard) {
+      send(command);
+      wait(std::min<Duration>(100ms, end - now_));
+    }
+  }
+
   // Handshake and OPEN; leaves nothing in the packet list.
   void connect() {
     synchronise();
