@@ -1,5 +1,15 @@
 # playerkit_add_test(NAME foo_test SOURCES foo_test.cpp LIBS playerkit_protocol)
 # Builds one GoogleTest program and registers each of its tests with CTest.
+#
+# Test sources are compiled in batches (CMake unity builds): every test file
+# parses gtest, and most nlohmann/json, which costs more than the tests
+# themselves; a batch parses them once. Tests must therefore keep their
+# helpers in a namespace named after the file (namespace foo_test { ... }),
+# not in an anonymous one shared by the whole batch.
+# -DPLAYERKIT_UNITY_TESTS=OFF compiles them one by one.
+option(PLAYERKIT_UNITY_TESTS "Compile test sources in batches" ON)
+set(PLAYERKIT_UNITY_BATCH 8 CACHE STRING "Test sources per batch")
+
 function(playerkit_add_test)
   if(NOT BUILD_TESTING)
     return()
@@ -9,5 +19,8 @@ function(playerkit_add_test)
   target_link_libraries(${ARG_NAME} PRIVATE ${ARG_LIBS} GTest::gtest GTest::gtest_main playerkit_warnings)
   target_compile_definitions(${ARG_NAME} PRIVATE
     PLAYERKIT_TEST_DATA_DIR="${PROJECT_SOURCE_DIR}/tests/data")
+  if(PLAYERKIT_UNITY_TESTS)
+    set_target_properties(${ARG_NAME} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${PLAYERKIT_UNITY_BATCH})
+  endif()
   gtest_discover_tests(${ARG_NAME} TEST_PREFIX "${ARG_NAME}." DISCOVERY_TIMEOUT 30 PROPERTIES TIMEOUT 120)
 endfunction()

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::client {
-namespace {
+namespace endpoint_test {
 
 TEST(ParseServerEndpoint, HostAloneKeepsThePlayerPort) {
   EXPECT_EQ(parse_server_endpoint("robot1"), (ServerEndpoint{"robot1", 6665}));
@@ -72,5 +72,5 @@ TEST(SplitToolTarget, NothingGivenIsTheDefaultServerAndNoDevices) {
   EXPECT_TRUE(target.rest.empty());
 }
 
-}  // namespace
+}  // namespace endpoint_test
 }  // namespace playerkit::client

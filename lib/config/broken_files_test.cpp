@@ -13,7 +13,7 @@
 #include "config/test_support.hpp"
 
 namespace playerkit::config {
-namespace {
+namespace broken_files_test {
 
 using testing::data_path;
 using testing::error_of;
@@ -128,5 +128,5 @@ TEST(BrokenFilesSuite, CoversEveryBrokenFile) {
   EXPECT_EQ(on_disk, std::size(kBrokenFiles));
 }
 
-}  // namespace
+}  // namespace broken_files_test
 }  // namespace playerkit::config

@@ -5,7 +5,7 @@
 #include <array>
 
 namespace playerkit::config {
-namespace {
+namespace closest_name_test {
 
 TEST(EditDistance, CountsInsertionsDeletionsReplacementsAndSwaps) {
   EXPECT_EQ(edit_distance("laser", "laser"), 0u);
@@ -31,5 +31,5 @@ TEST(ClosestName, TiesGoToTheEarlierCandidate) {
   EXPECT_EQ(closest_name("abc", names), "abd");
 }
 
-}  // namespace
+}  // namespace closest_name_test
 }  // namespace playerkit::config

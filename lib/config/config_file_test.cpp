@@ -11,7 +11,7 @@
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::config {
-namespace {
+namespace config_file_test {
 
 using testing::data_path;
 using testing::error_of;
@@ -291,5 +291,5 @@ TEST(ConfigFile, ReadmeExample) {
   EXPECT_EQ(config.ports(), (std::vector<std::uint16_t>{6666}));
 }
 
-}  // namespace
+}  // namespace config_file_test
 }  // namespace playerkit::config

@@ -8,7 +8,7 @@
 #include <limits>
 
 namespace playerkit::config {
-namespace {
+namespace conversions_test {
 
 TEST(CAtoi, ReadsLeadingDigitsAndIgnoresTheRest) {
   EXPECT_EQ(c_atoi("42"), 42);
@@ -72,5 +72,5 @@ TEST(CAtof, OutOfRangeBehavesLikeStrtod) {
   EXPECT_LT(c_atof("1e-999"), 1e-300);
 }
 
-}  // namespace
+}  // namespace conversions_test
 }  // namespace playerkit::config

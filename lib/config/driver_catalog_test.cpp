@@ -8,7 +8,7 @@
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::config {
-namespace {
+namespace driver_catalog_test {
 
 TEST(DriverCatalog, IsSortedWithoutDuplicates) {
   const auto drivers = player15_drivers();
@@ -103,5 +103,5 @@ TEST(DriverCatalog, HoldsEachDriverFamilyOfChapter7) {
   }
 }
 
-}  // namespace
+}  // namespace driver_catalog_test
 }  // namespace playerkit::config

@@ -9,7 +9,7 @@
 #include "config/source_location.hpp"
 
 namespace playerkit::config {
-namespace {
+namespace errors_test {
 
 TEST(SourceLocation, PrintsFileLineColumn) {
   EXPECT_EQ(to_string(SourceLocation{"robot.cfg", 12, 7}), "robot.cfg:12:7");
@@ -37,5 +37,5 @@ TEST(ConfigError, IsARuntimeError) {
   }
 }
 
-}  // namespace
+}  // namespace errors_test
 }  // namespace playerkit::config

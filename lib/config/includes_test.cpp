@@ -12,7 +12,7 @@
 #include "config/test_support.hpp"
 
 namespace playerkit::config {
-namespace {
+namespace includes_test {
 
 using testing::data_path;
 using testing::error_of;
@@ -134,5 +134,5 @@ TEST(Includes, ErrorsInsideAnIncludedFileNameThatFile) {
             data_path("broken-bad-character.cfg") + ":3:8: syntax error: unexpected character '='");
 }
 
-}  // namespace
+}  // namespace includes_test
 }  // namespace playerkit::config

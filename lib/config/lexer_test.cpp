@@ -11,7 +11,7 @@
 #include "config/errors.hpp"
 
 namespace playerkit::config {
-namespace {
+namespace lexer_test {
 
 using Kinds = std::vector<TokenKind>;
 using Texts = std::vector<std::string>;
@@ -172,5 +172,5 @@ TEST(Lexer, DescribeNamesTokensForMessages) {
   EXPECT_EQ(describe(Token{TokenKind::EndOfFile, "", {}}), "end of file");
 }
 
-}  // namespace
+}  // namespace lexer_test
 }  // namespace playerkit::config

@@ -13,7 +13,7 @@
 #include "config/test_support.hpp"
 
 namespace playerkit::config {
-namespace {
+namespace manual_examples_test {
 
 using testing::data_path;
 using testing::error_of;
@@ -310,5 +310,5 @@ TEST(ManualWritelog, UnreadOptionsAreReported) {
                 file + ":7:3: warning: property 'devices' is defined but not used"}));
 }
 
-}  // namespace
+}  // namespace manual_examples_test
 }  // namespace playerkit::config

@@ -12,7 +12,7 @@
 #include "config/test_support.hpp"
 
 namespace playerkit::config {
-namespace {
+namespace parser_test {
 
 using testing::data_path;
 using testing::error_of;
@@ -361,5 +361,5 @@ TEST(ParserErrors, LexerErrorsComeThrough) {
             "t.cfg:1:16: unterminated string: missing closing '\"' on this line");
 }
 
-}  // namespace
+}  // namespace parser_test
 }  // namespace playerkit::config

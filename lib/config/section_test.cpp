@@ -12,7 +12,7 @@
 #include "config/test_support.hpp"
 
 namespace playerkit::config {
-namespace {
+namespace section_test {
 
 using testing::data_path;
 
@@ -171,5 +171,5 @@ TEST(Section, ReadsMarkPropertiesUsed) {
   EXPECT_FALSE(used("f"));
 }
 
-}  // namespace
+}  // namespace section_test
 }  // namespace playerkit::config

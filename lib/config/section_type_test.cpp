@@ -7,7 +7,7 @@
 #include "config/test_support.hpp"
 
 namespace playerkit::config {
-namespace {
+namespace section_type_test {
 
 using testing::error_of;
 
@@ -108,5 +108,5 @@ TEST(SectionType, UndeclarableInterfacesAreNotSuggested) {
   EXPECT_EQ(error_for("playr:0"), "t.cfg:4:2: unknown interface 'playr'");
 }
 
-}  // namespace
+}  // namespace section_type_test
 }  // namespace playerkit::config

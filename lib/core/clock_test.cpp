@@ -5,7 +5,7 @@
 #include <ctime>
 
 namespace playerkit::core {
-namespace {
+namespace clock_test {
 
 TEST(ClockTest, MicrosecondConversionsRoundTrip) {
   EXPECT_EQ(to_microseconds({3, 250'000}), 3'250'000u);
@@ -29,5 +29,5 @@ TEST(ClockTest, WallClockIsUnixTime) {
   EXPECT_LT(now.usec, 1'000'000u);
 }
 
-}  // namespace
+}  // namespace clock_test
 }  // namespace playerkit::core

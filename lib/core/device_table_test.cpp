@@ -6,7 +6,7 @@
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::core {
-namespace {
+namespace device_table_test {
 
 using protocol::Access;
 using testing::CallCounts;
@@ -87,11 +87,11 @@ TEST_F(DeviceTableFixture, PrepareReachesEveryDevice) {
   EXPECT_EQ(counts.prepare, 2);
 }
 
-}  // namespace
+}  // namespace device_table_test
 }  // namespace playerkit::core
 
 namespace playerkit::core {
-namespace {
+namespace device_table_test {
 
 // A driver built on another device (as amcl uses a laser): it holds a
 // subscription on it exactly while it is itself subscribed.
@@ -125,5 +125,5 @@ TEST_F(DeviceTableFixture, DriversMaySubscribeToOtherDevices) {
   EXPECT_EQ(counts.shutdown, 2);
 }
 
-}  // namespace
+}  // namespace device_table_test
 }  // namespace playerkit::core

@@ -14,7 +14,7 @@
 #include "protocol/messages/position.hpp"
 
 namespace playerkit::core {
-namespace {
+namespace device_test {
 
 using protocol::Access;
 using protocol::MessageType;
@@ -291,11 +291,11 @@ TEST(DeviceKeyTest, PrintsAddressAndPort) {
   EXPECT_EQ(to_string(DeviceKey{6666, {protocol::kLaserCode, 1}}), "laser:1@6666");
 }
 
-}  // namespace
+}  // namespace device_test
 }  // namespace playerkit::core
 
 namespace playerkit::core {
-namespace {
+namespace device_test {
 
 TEST_F(DeviceFixture, QueuedDeviceKeepsItsLastSamplesInOrder) {
   DeviceInfo info{"queued", "", Access::kRead, DeviceLimits{1, 3}, false};
@@ -318,11 +318,11 @@ TEST_F(DeviceFixture, SensorDeviceKeepsNoHistory) {
   EXPECT_TRUE(device->data_since(0).empty());
 }
 
-}  // namespace
+}  // namespace device_test
 }  // namespace playerkit::core
 
 namespace playerkit::core {
-namespace {
+namespace device_test {
 
 TEST_F(DeviceFixture, CommandQueueDeviceHandsOutEveryCommandOldestFirst) {
   DeviceInfo info{"queued", "", Access::kAll, DeviceLimits{1, 0, 2}, false};
@@ -336,5 +336,5 @@ TEST_F(DeviceFixture, CommandQueueDeviceHandsOutEveryCommandOldestFirst) {
   EXPECT_FALSE(device.take_command());
 }
 
-}  // namespace
+}  // namespace device_test
 }  // namespace playerkit::core

@@ -7,7 +7,7 @@
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::core {
-namespace {
+namespace instantiate_test {
 
 using protocol::Access;
 
@@ -132,5 +132,5 @@ TEST(DriverRegistryTest, LaterRegistrationReplacesAndListingIsSorted) {
   EXPECT_EQ(registry.find("nope"), nullptr);
 }
 
-}  // namespace
+}  // namespace instantiate_test
 }  // namespace playerkit::core

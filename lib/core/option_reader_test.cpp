@@ -8,7 +8,7 @@
 #include "config/config_file.hpp"
 
 namespace playerkit::core {
-namespace {
+namespace option_reader_test {
 
 struct OptionReaderFixture : ::testing::Test {
   // One device section "laser:0 ( <body> )" on line 1 of opts.cfg.
@@ -85,5 +85,5 @@ TEST_F(OptionReaderFixture, LengthsAndAnglesUseTheFileUnits) {
             std::string::npos);
 }
 
-}  // namespace
+}  // namespace option_reader_test
 }  // namespace playerkit::core

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::core {
-namespace {
+namespace plugin_test {
 
 // Loading a real plugin and serving its data is tested in lib/server with
 // examples/plugin-driver; here only the failures.
@@ -29,5 +29,5 @@ TEST(PluginTest, LibraryWithoutEntryPointIsRefused) {
   EXPECT_TRUE(registry.all().empty());
 }
 
-}  // namespace
+}  // namespace plugin_test
 }  // namespace playerkit::core

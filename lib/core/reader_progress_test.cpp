@@ -7,7 +7,7 @@
 #include <thread>
 
 namespace playerkit::core {
-namespace {
+namespace reader_progress_test {
 
 using namespace std::chrono_literals;
 
@@ -73,5 +73,5 @@ TEST(ReaderProgress, WaitForReaderReturnsOnceOneRegisters) {
   EXPECT_EQ(progress.count(), 1u);
 }
 
-}  // namespace
+}  // namespace reader_progress_test
 }  // namespace playerkit::core

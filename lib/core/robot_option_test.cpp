@@ -9,7 +9,7 @@
 #include "core/device_table.hpp"
 
 namespace playerkit::core {
-namespace {
+namespace robot_option_test {
 
 struct RobotOptionFixture : ::testing::Test {
   void load(std::string_view text) {
@@ -73,5 +73,5 @@ TEST_F(RobotOptionFixture, TheSameValueTwiceIsFine) {
   EXPECT_EQ(port_for(1).value, "/dev/ttyS0");
 }
 
-}  // namespace
+}  // namespace robot_option_test
 }  // namespace playerkit::core

@@ -8,7 +8,7 @@
 #include "core/driver.hpp"
 
 namespace playerkit::core {
-namespace {
+namespace shared_connection_test {
 
 // Records what happens to the line, as a robot's connection would do to a port.
 class RecordingConnection : public SharedConnection {
@@ -100,5 +100,5 @@ TEST(ConnectionPool, AKeyClaimedByAnotherKindIsAnError) {
                std::logic_error);
 }
 
-}  // namespace
+}  // namespace shared_connection_test
 }  // namespace playerkit::core

@@ -8,7 +8,7 @@
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::core {
-namespace {
+namespace source_subscription_test {
 
 struct CountingListener : DeviceListener {
   int data = 0;
@@ -90,5 +90,5 @@ TEST_F(SourceSubscriptionFixture, StopListeningKeepsTheSubscription) {
   EXPECT_FALSE(subscription);
 }
 
-}  // namespace
+}  // namespace source_subscription_test
 }  // namespace playerkit::core

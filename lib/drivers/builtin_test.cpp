@@ -9,7 +9,7 @@
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::drivers {
-namespace {
+namespace builtin_test {
 
 using protocol::Access;
 
@@ -80,5 +80,5 @@ TEST(BuiltinDrivers, DefaultDriversOfMcomAndCommsAreBuiltIn) {
   EXPECT_EQ(builtin.device(protocol::kCommsCode).info().driver_name, "udpbroadcast");
 }
 
-}  // namespace
+}  // namespace builtin_test
 }  // namespace playerkit::drivers

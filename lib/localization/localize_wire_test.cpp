@@ -7,7 +7,7 @@
 #include "protocol/binary_codec.hpp"
 
 namespace playerkit::localization {
-namespace {
+namespace localize_wire_test {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
@@ -82,5 +82,5 @@ TEST(LocalizeWire, OdometryAndLaserToSiUnits) {
   EXPECT_DOUBLE_EQ(scan.sensor_pose.x, 0.2);
 }
 
-}  // namespace
+}  // namespace localize_wire_test
 }  // namespace playerkit::localization

@@ -18,7 +18,7 @@
 #include "log/text_log_writer.hpp"
 
 namespace playerkit::localization {
-namespace {
+namespace logged_scan_reader_test {
 
 using testing::radish;
 using testing::TemporaryDirectory;
@@ -204,5 +204,5 @@ TEST(LoggedScanReader, UnreadableOrForeignFilesAreClearErrors) {
   }
 }
 
-}  // namespace
+}  // namespace logged_scan_reader_test
 }  // namespace playerkit::localization

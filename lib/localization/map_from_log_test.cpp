@@ -10,7 +10,7 @@
 #include "localization/localization_test_support.hpp"
 
 namespace playerkit::localization {
-namespace {
+namespace map_from_log_test {
 
 TEST(MapFromLog, IntelExcerptHasWallsAtBeamEndsAndFreeSpaceWhereTheRobotDrove) {
   grid::OccupancyMappingParameters parameters;
@@ -77,5 +77,5 @@ TEST(MapFromLog, StrideAndMissingTruthAreHonoured) {
   EXPECT_EQ(map_from_log(testing::radish("intel-corrected.log.gz"), {.resolution = 0.2}, options).scans_used, 10u);
 }
 
-}  // namespace
+}  // namespace map_from_log_test
 }  // namespace playerkit::localization

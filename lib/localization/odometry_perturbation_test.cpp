@@ -17,7 +17,7 @@
 #include "log/log_input.hpp"
 
 namespace playerkit::localization {
-namespace {
+namespace odometry_perturbation_test {
 
 using testing::radish;
 using testing::TemporaryDirectory;
@@ -266,5 +266,5 @@ TEST(PerturbLog, PlayerLogWithoutTruthGetsTruthLinesWithTheOriginalPoses) {
   EXPECT_EQ(*second->odometry, (geometry::Pose2{2.1, 2.0, 0.5}));
 }
 
-}  // namespace
+}  // namespace odometry_perturbation_test
 }  // namespace playerkit::localization

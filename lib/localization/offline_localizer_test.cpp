@@ -14,7 +14,7 @@
 #include "localization/trajectory_evaluation.hpp"
 
 namespace playerkit::localization {
-namespace {
+namespace offline_localizer_test {
 
 // The Intel log, its map from its own corrected poses (coarse, to keep the
 // test quick) and its odometry degraded by the default model.
@@ -126,5 +126,5 @@ TEST(EstimateWriter, JsonLinesCarryTheSameKeys) {
             "\"std_y\":0.0000,\"std_yaw\":0.00000,\"particles\":7}\n");
 }
 
-}  // namespace
+}  // namespace offline_localizer_test
 }  // namespace playerkit::localization

@@ -14,7 +14,7 @@
 #include "localization/localization_test_support.hpp"
 
 namespace playerkit::localization {
-namespace {
+namespace trajectory_evaluation_test {
 
 constexpr double kDegree = std::numbers::pi / 180;
 
@@ -172,5 +172,5 @@ TEST(TruthFromLog, IntelTruthIsTheScanPoses) {
   EXPECT_EQ(result.all.position_max_m, 0.0);
 }
 
-}  // namespace
+}  // namespace trajectory_evaluation_test
 }  // namespace playerkit::localization

@@ -11,7 +11,7 @@
 #include <string>
 
 namespace playerkit::log {
-namespace {
+namespace carmen_log_parser_test {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -248,5 +248,5 @@ TEST(CarmenLineTest, ARawLaserWithoutRemissionCountIsAnError) {
             "num_remissions, remissions, ipc timestamp, host, logger timestamp)");
 }
 
-}  // namespace
+}  // namespace carmen_log_parser_test
 }  // namespace playerkit::log

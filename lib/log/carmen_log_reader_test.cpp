@@ -9,7 +9,7 @@
 #include <string>
 
 namespace playerkit::log {
-namespace {
+namespace carmen_log_reader_test {
 
 const std::string kLog =
     "# CARMEN Logfile\n"                                       // 1
@@ -107,5 +107,5 @@ TEST(CarmenLogReaderTest, AnEmptyStreamHasNoRecords) {
   EXPECT_EQ(reader.malformed_lines(), 0u);
 }
 
-}  // namespace
+}  // namespace carmen_log_reader_test
 }  // namespace playerkit::log

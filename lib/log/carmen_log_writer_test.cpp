@@ -13,7 +13,7 @@
 #include "log/carmen_log_reader.hpp"
 
 namespace playerkit::log {
-namespace {
+namespace carmen_log_writer_test {
 
 CarmenOdometry sample_odometry() {
   return {{1.5, -2.25, 0.785398}, 0.3, -0.125, 0.05, {1086000000.125, "robot1", 12.5}};
@@ -131,5 +131,5 @@ TEST(CarmenWriterTest, RefusesWhatWouldNotReadBack) {
   EXPECT_THROW(format_flaser(scan), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace carmen_log_writer_test
 }  // namespace playerkit::log

@@ -18,7 +18,7 @@
 #include "log/log_input.hpp"
 
 namespace playerkit::log {
-namespace {
+namespace carmen_radish_test {
 
 const std::filesystem::path kRadish = std::filesystem::path(PLAYERKIT_TEST_DATA_DIR) / "radish";
 
@@ -132,5 +132,5 @@ TEST(CarmenRadishTest, FlirtlibRobotLaserExcerpt) {
   EXPECT_EQ(scan.stamp, (CarmenStamp{976053557.767368, "x", 700.430084}));
 }
 
-}  // namespace
+}  // namespace carmen_radish_test
 }  // namespace playerkit::log

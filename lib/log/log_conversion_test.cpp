@@ -23,7 +23,7 @@
 #include "protocol/messages/truth.hpp"
 
 namespace playerkit::log {
-namespace {
+namespace log_conversion_test {
 
 using protocol::decode;
 
@@ -206,5 +206,5 @@ TEST(LogConversionRadish, IntelRoundTripKeepsEveryScan) {
   EXPECT_EQ(converter.layout_mismatches(), 0u);
 }
 
-}  // namespace
+}  // namespace log_conversion_test
 }  // namespace playerkit::log

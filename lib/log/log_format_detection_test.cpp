@@ -10,7 +10,7 @@
 #include <unistd.h>
 
 namespace playerkit::log {
-namespace {
+namespace log_format_detection_test {
 
 const std::filesystem::path kRadish = std::filesystem::path(PLAYERKIT_TEST_DATA_DIR) / "radish";
 
@@ -71,5 +71,5 @@ TEST(LogFormatDetection, PlainPlayerFileAndMissingFile) {
   EXPECT_EQ(to_string(LogFormat::kCarmen), "carmen");
 }
 
-}  // namespace
+}  // namespace log_format_detection_test
 }  // namespace playerkit::log

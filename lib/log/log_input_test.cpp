@@ -10,7 +10,7 @@
 #include <zlib.h>
 
 namespace playerkit::log {
-namespace {
+namespace log_input_test {
 
 class LogInputTest : public ::testing::Test {
  protected:
@@ -88,5 +88,5 @@ TEST_F(LogInputTest, AMissingFileIsAClearError) {
   EXPECT_THROW(open_log_input(directory_), std::runtime_error);
 }
 
-}  // namespace
+}  // namespace log_input_test
 }  // namespace playerkit::log

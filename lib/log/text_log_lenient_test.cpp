@@ -12,7 +12,7 @@
 #include "log/text_log_reader.hpp"
 
 namespace playerkit::log {
-namespace {
+namespace text_log_lenient_test {
 
 using protocol::Timestamp;
 
@@ -107,5 +107,5 @@ TEST(TextLogLenient, AGzipLogReadsThroughOpenLogInput) {
   EXPECT_FALSE(input->error().has_value());
 }
 
-}  // namespace
+}  // namespace text_log_lenient_test
 }  // namespace playerkit::log

@@ -17,7 +17,7 @@
 #include "protocol/messages/truth.hpp"
 
 namespace playerkit::log {
-namespace {
+namespace text_log_reader_test {
 
 using namespace protocol;
 
@@ -324,5 +324,5 @@ TEST(TextLogReader, RejectsOtherFileVersions) {
   }
 }
 
-}  // namespace
+}  // namespace text_log_reader_test
 }  // namespace playerkit::log

@@ -18,7 +18,7 @@
 #include "protocol/messages/truth.hpp"
 
 namespace playerkit::log {
-namespace {
+namespace text_log_round_trip_test {
 
 using namespace protocol;
 using test::data_message;
@@ -180,5 +180,5 @@ TEST(TextLogRoundTrip, FiducialLosesItsUncertainties) {
   EXPECT_EQ(through_the_log(kFiducialCode, seen), expected);
 }
 
-}  // namespace
+}  // namespace text_log_round_trip_test
 }  // namespace playerkit::log

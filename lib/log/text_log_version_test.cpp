@@ -14,7 +14,7 @@
 #include "protocol/messages/all.hpp"
 
 namespace playerkit::log {
-namespace {
+namespace text_log_version_test {
 
 using namespace protocol;
 using test::data_message;
@@ -332,5 +332,5 @@ TEST(TextLogRoundTrips, AWholeFileInEachVersionThroughTheReader) {
   }
 }
 
-}  // namespace
+}  // namespace text_log_version_test
 }  // namespace playerkit::log

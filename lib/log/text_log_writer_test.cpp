@@ -23,7 +23,7 @@
 #include "protocol/messages/truth.hpp"
 
 namespace playerkit::log {
-namespace {
+namespace text_log_writer_test {
 
 using namespace protocol;
 using test::data_message;
@@ -240,5 +240,5 @@ TEST(TextLogWriter, TheErrorNamesTheProblem) {
   }
 }
 
-}  // namespace
+}  // namespace text_log_writer_test
 }  // namespace playerkit::log

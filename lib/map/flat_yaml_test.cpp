@@ -7,7 +7,7 @@
 #include <string>
 
 namespace playerkit::map {
-namespace {
+namespace flat_yaml_test {
 
 // The message of the MapFileError that parsing `text` throws.
 std::string error_of(const std::string& text) {
@@ -93,5 +93,5 @@ TEST(FlatYaml, ErrorExposesLineAndColumn) {
   }
 }
 
-}  // namespace
+}  // namespace flat_yaml_test
 }  // namespace playerkit::map

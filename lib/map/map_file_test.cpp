@@ -12,7 +12,7 @@
 #include <vector>
 
 namespace playerkit::map {
-namespace {
+namespace map_file_test {
 
 using grid::CellState;
 namespace fs = std::filesystem;
@@ -273,5 +273,5 @@ TEST(PlayerMaps, StageCavePngIsTheSameCaveWithoutNegate) {
   EXPECT_LE(differing, 10);
 }
 
-}  // namespace
+}  // namespace map_file_test
 }  // namespace playerkit::map

@@ -11,7 +11,7 @@
 #include <vector>
 
 namespace playerkit::map {
-namespace {
+namespace trajectory_plot_test {
 
 using grid::CellState;
 namespace fs = std::filesystem;
@@ -150,5 +150,5 @@ TEST_F(TrajectoryPlotTest, EmptyGridIsRefused) {
       std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace trajectory_plot_test
 }  // namespace playerkit::map

@@ -8,7 +8,7 @@
 #include "protocol/messages/all.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace binary_codec_test {
 
 TEST(BinaryCodec, Int64IsBigEndianAcrossBothHalves) {
   LocalizeSetPose pose;
@@ -102,5 +102,5 @@ TEST(BinaryCodec, EncodeToAppends) {
   EXPECT_EQ(out, (std::vector<std::uint8_t>{0xAA, 0x01, 0x02}));
 }
 
-}  // namespace
+}  // namespace binary_codec_test
 }  // namespace playerkit::protocol

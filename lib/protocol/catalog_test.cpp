@@ -10,7 +10,7 @@
 #include "protocol/payload_json.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace catalog_test {
 
 using nlohmann::json;
 
@@ -135,5 +135,5 @@ TEST(PayloadJson, DataAndCommandsRoundTrip) {
   EXPECT_THROW(payload_to_json(kLaserCode, MessageType::kData, std::vector<std::uint8_t>(10)), DecodeError);
 }
 
-}  // namespace
+}  // namespace catalog_test
 }  // namespace playerkit::protocol

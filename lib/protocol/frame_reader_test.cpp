@@ -5,7 +5,7 @@
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace frame_reader_test {
 
 
 
@@ -89,11 +89,11 @@ TEST(FrameReaderTest, AbsurdSizeIsTreatedAsGarbage) {
   EXPECT_EQ(std::get<Message>(events[1]).payload, (std::vector<std::uint8_t>{0, 1}));
 }
 
-}  // namespace
+}  // namespace frame_reader_test
 }  // namespace playerkit::protocol
 
 namespace playerkit::protocol {
-namespace {
+namespace frame_reader_test {
 
 TEST(FrameReaderTest, AReaderMayAllowLargerPayloads) {
   const std::vector<std::uint8_t> image(100'000, 7);  // a camera frame, say
@@ -107,5 +107,5 @@ TEST(FrameReaderTest, AReaderMayAllowLargerPayloads) {
   EXPECT_EQ(std::get<Message>(events[0]).payload, image);
 }
 
-}  // namespace
+}  // namespace frame_reader_test
 }  // namespace playerkit::protocol

@@ -5,7 +5,7 @@
 #include "protocol/device_address.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace interfaces_test {
 
 TEST(Interfaces, HeaderCodesWinOverTheManual) {
   EXPECT_EQ(find_interface("null")->code, 256);
@@ -39,5 +39,5 @@ TEST(DeviceAddress, ParsesNamesIndicesAndCodes) {
   EXPECT_EQ(to_string(DeviceAddress{99, 0}), "99:0");
 }
 
-}  // namespace
+}  // namespace interfaces_test
 }  // namespace playerkit::protocol

@@ -5,7 +5,7 @@
 #include "protocol/messages/all.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace json_codec_test {
 
 using nlohmann::json;
 
@@ -95,5 +95,5 @@ TEST(JsonCodec, Int64FieldsKeepFullPrecision) {
   EXPECT_EQ(from_json<LocalizeHypothesis>(to_json(h)), h);
 }
 
-}  // namespace
+}  // namespace json_codec_test
 }  // namespace playerkit::protocol

@@ -14,7 +14,7 @@
 #include "protocol/messages/all.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace layout_test {
 
 struct SpecField {
   std::string name;
@@ -108,5 +108,5 @@ TEST(Layout, ShortFormsOfSection6) {
   EXPECT_EQ(kMaxWireSize<LaserData>, 1213u);
 }
 
-}  // namespace
+}  // namespace layout_test
 }  // namespace playerkit::protocol

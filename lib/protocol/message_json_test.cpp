@@ -8,7 +8,7 @@
 #include "protocol/messages/all.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace message_json_test {
 
 using nlohmann::json;
 
@@ -61,5 +61,5 @@ TEST(MessageJson, ClearErrors) {
   EXPECT_THROW(message_from_json(json::parse(R"({"type":"req","device":"laser","request":"fly"})")), JsonError);
 }
 
-}  // namespace
+}  // namespace message_json_test
 }  // namespace playerkit::protocol

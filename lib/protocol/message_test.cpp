@@ -7,7 +7,7 @@
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace message_test {
 
 // wire-format.md §4, worked example: the SYNCH at 1086000000.250000 s.
 const std::vector<std::uint8_t> kSynchBytes = {
@@ -90,5 +90,5 @@ TEST(Banner, RejectsOtherBytes) {
   EXPECT_THROW(make_banner(std::string(23, '9')), std::length_error);
 }
 
-}  // namespace
+}  // namespace message_test
 }  // namespace playerkit::protocol

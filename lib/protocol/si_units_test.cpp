@@ -25,7 +25,7 @@
 #include "protocol/payload_json.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace si_units_test {
 
 using nlohmann::json;
 
@@ -497,5 +497,5 @@ TEST(SiUnitsTable, EveryInterfaceWithUnitsHasAGoldenConversion) {
   EXPECT_EQ(interfaces_with_units.size(), 17u);
 }
 
-}  // namespace
+}  // namespace si_units_test
 }  // namespace playerkit::protocol

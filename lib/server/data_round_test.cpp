@@ -6,7 +6,7 @@
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::server {
-namespace {
+namespace data_round_test {
 
 using protocol::MessageType;
 using Bytes = std::vector<std::uint8_t>;
@@ -106,11 +106,11 @@ TEST_F(DataRoundFixture, ClosedDevicesStopSending) {
 }
 
 
-}  // namespace
+}  // namespace data_round_test
 }  // namespace playerkit::server
 
 namespace playerkit::server {
-namespace {
+namespace data_round_test {
 
 TEST_F(DataRoundFixture, QueuedDeviceSendsEveryMessageOnceFromSubscriptionOn) {
   core::Device& comms = devices.add(std::make_unique<core::Device>(
@@ -157,5 +157,5 @@ TEST_F(DataRoundFixture, QueuedDeviceLearnsHowFarEachReaderGot) {
   EXPECT_EQ(comms.readers().count(), 0u);  // closing lets the publisher go on
 }
 
-}  // namespace
+}  // namespace data_round_test
 }  // namespace playerkit::server

@@ -8,7 +8,7 @@
 #include "protocol/messages/player.hpp"
 
 namespace playerkit::server {
-namespace {
+namespace player_requests_test {
 
 using protocol::MessageType;
 using Bytes = std::vector<std::uint8_t>;
@@ -136,5 +136,5 @@ TEST_F(PlayerRequestsFixture, NameServiceFindsARobotOnAnyPort) {
   EXPECT_EQ(answer.port, 0);
 }
 
-}  // namespace
+}  // namespace player_requests_test
 }  // namespace playerkit::server

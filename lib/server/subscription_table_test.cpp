@@ -6,7 +6,7 @@
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::server {
-namespace {
+namespace subscription_table_test {
 
 struct SubscriptionFixture : ::testing::Test {
   void SetUp() override { logger.set_sink([](core::LogLevel, std::string_view) {}); }
@@ -91,5 +91,5 @@ TEST_F(SubscriptionFixture, EntriesKeepFirstRequestOrder) {
   EXPECT_EQ(table.entries()[1].device.interface, protocol::kSonarCode);
 }
 
-}  // namespace
+}  // namespace subscription_table_test
 }  // namespace playerkit::server

@@ -16,7 +16,7 @@
 #include "test_server.hpp"
 
 namespace playerkit::client {
-namespace {
+namespace client_test {
 
 using protocol::Access;
 using protocol::MessageType;
@@ -312,5 +312,5 @@ TEST(ClientTest, NativeHandleIsTheSocketUntilClosed) {
   EXPECT_EQ(client.native_handle(), -1);
 }
 
-}  // namespace
+}  // namespace client_test
 }  // namespace playerkit::client

@@ -25,7 +25,7 @@
 #include "test_server.hpp"
 
 namespace playerkit::drivers {
-namespace {
+namespace passthrough_test {
 
 using namespace std::chrono_literals;
 using client::Client;
@@ -342,5 +342,5 @@ TEST(Passthrough, RemoteWithoutTheDeviceOrRefusingItGivesEWithALogLine) {
   EXPECT_TRUE(orac.logged("the remote server " + where + " refused laser:1 (its driver 'refuser'"));
 }
 
-}  // namespace
+}  // namespace passthrough_test
 }  // namespace playerkit::drivers

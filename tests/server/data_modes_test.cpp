@@ -7,7 +7,7 @@
 #include "test_server.hpp"
 
 namespace playerkit::testing {
-namespace {
+namespace data_modes_test {
 
 using protocol::DataMode;
 using protocol::MessageType;
@@ -126,5 +126,5 @@ TEST_F(DataModesTest, WriteOnlySubscriptionStillGetsSynchs) {
   }
 }
 
-}  // namespace
+}  // namespace data_modes_test
 }  // namespace playerkit::testing

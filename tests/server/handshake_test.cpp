@@ -10,7 +10,7 @@
 #include "test_server.hpp"
 
 namespace playerkit::testing {
-namespace {
+namespace handshake_test {
 
 using protocol::MessageType;
 using Bytes = std::vector<std::uint8_t>;
@@ -175,5 +175,5 @@ TEST(HandshakeTest, TwoServersOnDifferentPortsAreIndependent) {
   EXPECT_EQ(round[0].payload, (Bytes{3}));
 }
 
-}  // namespace
+}  // namespace handshake_test
 }  // namespace playerkit::testing

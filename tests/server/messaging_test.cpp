@@ -9,7 +9,7 @@
 #include "test_server.hpp"
 
 namespace playerkit::testing {
-namespace {
+namespace messaging_test {
 
 using protocol::MessageType;
 using Bytes = std::vector<std::uint8_t>;
@@ -43,5 +43,5 @@ TEST(MessagingTest, EveryBroadcastOfABurstReachesEveryReader) {
   }
 }
 
-}  // namespace
+}  // namespace messaging_test
 }  // namespace playerkit::testing

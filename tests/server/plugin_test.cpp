@@ -10,7 +10,7 @@
 #include "test_server.hpp"
 
 namespace playerkit::testing {
-namespace {
+namespace plugin_test {
 
 TEST(PluginTest, ExamplePluginDriverIsServedToAClient) {
   TestServer server("power:0 ( driver \"simbattery\" volts 12.3 drain 0 rate 50 )\n", {}, 0,
@@ -44,5 +44,5 @@ TEST(PluginTest, PluginOptionsAreCheckedAtStartUp) {
   }
 }
 
-}  // namespace
+}  // namespace plugin_test
 }  // namespace playerkit::testing

@@ -9,7 +9,7 @@
 #include "test_server.hpp"
 
 namespace playerkit::testing {
-namespace {
+namespace requests_test {
 
 using protocol::MessageType;
 using Bytes = std::vector<std::uint8_t>;
@@ -152,5 +152,5 @@ TEST_F(RequestsTest, ClientsGoingAwayReleaseTheirSubscriptions) {
   EXPECT_EQ(server.device("sonar:0").subscriptions(), 0);
 }
 
-}  // namespace
+}  // namespace requests_test
 }  // namespace playerkit::testing

@@ -10,7 +10,7 @@
 #include "test_server.hpp"
 
 namespace playerkit::testing {
-namespace {
+namespace robustness_test {
 
 using protocol::MessageType;
 using Bytes = std::vector<std::uint8_t>;
@@ -188,5 +188,5 @@ TEST(RobustnessTest, AStalledClientDoesNotDelayOthersAndIsDisconnected) {
   for (int i = 0; i < 3; ++i) EXPECT_EQ(healthy.read_round().back().type(), MessageType::kSynch);
 }
 
-}  // namespace
+}  // namespace robustness_test
 }  // namespace playerkit::testing

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::tools {
-namespace {
+namespace field_path_test {
 
 using nlohmann::json;
 
@@ -82,5 +82,5 @@ TEST(DescribeFieldsTest, ListsKeysWithArrayBounds) {
   EXPECT_EQ(describe_fields(json::parse(R"({"msg":[]})")), "msg (empty array)");
 }
 
-}  // namespace
+}  // namespace field_path_test
 }  // namespace playerkit::tools

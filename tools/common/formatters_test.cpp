@@ -11,7 +11,7 @@
 #include "protocol/messages/power.hpp"
 
 namespace playerkit::tools {
-namespace {
+namespace formatters_test {
 
 using nlohmann::json;
 using protocol::Timestamp;
@@ -226,5 +226,5 @@ TEST(LogFormatterTest, PowerAndRoundsASyncLine) {
             "1086000000.300000 robot1 7000 sync 00 1086000000.300000 \n");
 }
 
-}  // namespace
+}  // namespace formatters_test
 }  // namespace playerkit::tools

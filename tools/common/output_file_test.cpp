@@ -9,7 +9,7 @@
 #include <string>
 
 namespace playerkit::tools {
-namespace {
+namespace output_file_test {
 
 std::filesystem::path scratch_path(const std::string& name) {
   const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
@@ -70,5 +70,5 @@ TEST(OutputFile, AFailedWriteIsReportedByFlush) {
   EXPECT_THROW(output.flush(), std::runtime_error);
 }
 
-}  // namespace
+}  // namespace output_file_test
 }  // namespace playerkit::tools

@@ -5,7 +5,7 @@
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::cat {
-namespace {
+namespace cat_options_test {
 
 CommandLine with_targets(std::vector<std::string> targets) {
   CommandLine command_line;
@@ -149,5 +149,5 @@ TEST(CatOptionsTest, CsvFileNames) {
   EXPECT_EQ(csv_file_name({protocol::kPowerCode, 12}), "power_12.csv");
 }
 
-}  // namespace
+}  // namespace cat_options_test
 }  // namespace playerkit::cat

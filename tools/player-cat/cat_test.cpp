@@ -18,7 +18,7 @@
 #include "test_server.hpp"
 
 namespace playerkit::cat {
-namespace {
+namespace cat_test {
 
 using nlohmann::json;
 using testing::TestServer;
@@ -347,5 +347,5 @@ TEST(CatConnectTest, ASilentPeerTimesOutAndAClosedPortIsRefused) {
       << refused_err.str();
 }
 
-}  // namespace
+}  // namespace cat_test
 }  // namespace playerkit::cat

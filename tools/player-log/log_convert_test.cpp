@@ -18,7 +18,7 @@
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::plog {
-namespace {
+namespace log_convert_test {
 
 const std::filesystem::path kIntel =
     std::filesystem::path(PLAYERKIT_TEST_DATA_DIR) / "radish" / "intel-corrected.log.gz";
@@ -130,5 +130,5 @@ TEST(Cut, KeepsTheWindowAndTheDevicesByteForByte) {
   EXPECT_THROW(run_cut(cut_options(kIntel.string(), std::nullopt, std::nullopt), out, err, progress), std::runtime_error);
 }
 
-}  // namespace
+}  // namespace log_convert_test
 }  // namespace playerkit::plog

@@ -9,7 +9,7 @@
 #include "log/log_parse_error.hpp"
 
 namespace playerkit::plog {
-namespace {
+namespace log_info_test {
 
 const std::filesystem::path kRadish = std::filesystem::path(PLAYERKIT_TEST_DATA_DIR) / "radish";
 
@@ -78,5 +78,5 @@ TEST(LogInfo, PlayerLogDevicesGapsRatesAndMalformedLines) {
   EXPECT_NE(text.str().find("malformed: 1"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace log_info_test
 }  // namespace playerkit::plog

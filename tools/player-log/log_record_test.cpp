@@ -14,7 +14,7 @@
 #include "server/test_server.hpp"
 
 namespace playerkit::plog {
-namespace {
+namespace log_record_test {
 
 std::vector<log::DataLine> data_lines(const std::string& text) {
   std::istringstream in(text);
@@ -81,5 +81,5 @@ TEST(Record, TargetsAreCheckedAsUsage) {
   EXPECT_THROW(parse_record_targets({"laser:0", "nosuch"}, other), UsageError);
 }
 
-}  // namespace
+}  // namespace log_record_test
 }  // namespace playerkit::plog

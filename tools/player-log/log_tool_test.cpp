@@ -10,7 +10,7 @@
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::plog {
-namespace {
+namespace log_tool_test {
 
 std::filesystem::path write_file(const std::string& name, const std::string& text) {
   const auto path = std::filesystem::path(::testing::TempDir()) / name;
@@ -42,5 +42,5 @@ TEST(ParseDeviceList, NamesDevicesOrFails) {
   EXPECT_THROW(parse_device_list(""), UsageError);
 }
 
-}  // namespace
+}  // namespace log_tool_test
 }  // namespace playerkit::plog

@@ -11,7 +11,7 @@
 #include "protocol/payload_json.hpp"
 
 namespace playerkit::player_send {
-namespace {
+namespace catalog_help_test {
 
 using Fields = std::vector<std::string>;
 
@@ -119,5 +119,5 @@ TEST(CatalogHelp, EveryListedFieldIsAccepted) {
   EXPECT_GT(checked, 100u);
 }
 
-}  // namespace
+}  // namespace catalog_help_test
 }  // namespace playerkit::player_send

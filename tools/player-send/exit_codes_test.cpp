@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::player_send {
-namespace {
+namespace exit_codes_test {
 
 using protocol::MessageType;
 
@@ -31,5 +31,5 @@ TEST(ExitCodes, TheFirstFailureOfARunWins) {
   EXPECT_EQ(combine(ExitCode::kError, ExitCode::kNack), ExitCode::kError);
 }
 
-}  // namespace
+}  // namespace exit_codes_test
 }  // namespace playerkit::player_send

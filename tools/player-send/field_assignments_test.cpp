@@ -8,7 +8,7 @@
 #include "usage_error.hpp"
 
 namespace playerkit::player_send {
-namespace {
+namespace field_assignments_test {
 
 using nlohmann::json;
 
@@ -90,5 +90,5 @@ TEST(FieldAssignments, AListCannotAlsoBeAStruct) {
   EXPECT_NE(error_of({"id.code=1", "id.0=2"}).find("id is given as a struct elsewhere"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace field_assignments_test
 }  // namespace playerkit::player_send

@@ -11,7 +11,7 @@
 #include "usage_error.hpp"
 
 namespace playerkit::player_send {
-namespace {
+namespace json_line_test {
 
 using protocol::MessageType;
 
@@ -107,5 +107,5 @@ TEST(JsonLine, BadFieldsAndRequestsAreNamed) {
   EXPECT_CONTAINS(error_of(R"({"device":"laser:0","data":{"x":1}})"), "laser has no cmd struct");
 }
 
-}  // namespace
+}  // namespace json_line_test
 }  // namespace playerkit::player_send

@@ -11,7 +11,7 @@
 #include "usage_error.hpp"
 
 namespace playerkit::player_send {
-namespace {
+namespace outgoing_message_test {
 
 using protocol::MessageType;
 
@@ -135,5 +135,5 @@ TEST(OutgoingMessage, RequestNamesForMessages) {
   EXPECT_EQ(request_names(protocol::kGpsCode), "none");
 }
 
-}  // namespace
+}  // namespace outgoing_message_test
 }  // namespace playerkit::player_send

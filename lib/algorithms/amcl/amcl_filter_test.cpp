@@ -10,7 +10,7 @@
 #include <random>
 
 namespace playerkit::amcl {
-namespace {
+namespace amcl_filter_test {
 constexpr double pi = std::numbers::pi;
 
 // A robot driving waypoint to waypoint through the test room (turning in
@@ -338,5 +338,5 @@ TEST(AmclFilter, RejectsAMapWithoutFreeSpace) {
   EXPECT_THROW(AmclFilter(AmclParameters{}, nullptr, 1), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace amcl_filter_test
 }  // namespace playerkit::amcl

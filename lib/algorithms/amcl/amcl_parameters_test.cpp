@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 namespace playerkit::amcl {
-namespace {
+namespace amcl_parameters_test {
 
 TEST(AmclParameters, DefaultsAreValidAndMatchPlayer15WherePlayerHadThem) {
   const AmclParameters p;
@@ -37,5 +37,5 @@ TEST(AmclParameters, RejectsNonsense) {
   rejects([](AmclParameters& p) { p.scan_likelihood_exponent = 1.5; });
 }
 
-}  // namespace
+}  // namespace amcl_parameters_test
 }  // namespace playerkit::amcl

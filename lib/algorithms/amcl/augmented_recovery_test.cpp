@@ -5,7 +5,7 @@
 #include <cmath>
 
 namespace playerkit::amcl {
-namespace {
+namespace augmented_recovery_test {
 
 TEST(AugmentedRecovery, SteadyLikelihoodInjectsNothing) {
   AugmentedRecovery recovery(0.001, 0.1);
@@ -60,5 +60,5 @@ TEST(AugmentedRecovery, StaysFiniteForTinyLikelihoods) {
   EXPECT_GT(recovery.injection_probability(), 0.09);
 }
 
-}  // namespace
+}  // namespace augmented_recovery_test
 }  // namespace playerkit::amcl

@@ -9,7 +9,7 @@
 #include <numbers>
 
 namespace playerkit::amcl {
-namespace {
+namespace beam_model_test {
 
 using test::scores;
 
@@ -72,5 +72,5 @@ TEST(BeamModel, NoReturnReadingsFavourPosesWithNothingInRange) {
   EXPECT_GT(s[0] - s[1], 11 * 3.0);
 }
 
-}  // namespace
+}  // namespace beam_model_test
 }  // namespace playerkit::amcl

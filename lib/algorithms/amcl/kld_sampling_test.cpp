@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::amcl {
-namespace {
+namespace kld_sampling_test {
 
 TEST(KldSampling, MatchesFox2001FormulaByHand) {
   // k = 2, error 0.01, z = 3: a = 2/9; (1 - 2/9 + sqrt(2/9) * 3)^3 =
@@ -29,5 +29,5 @@ TEST(KldSampling, CountIsRoundedUpAndClamped) {
   EXPECT_EQ(kld_particle_count(100, 0.01, 3.0, 100, 5000), 5000u);
 }
 
-}  // namespace
+}  // namespace kld_sampling_test
 }  // namespace playerkit::amcl

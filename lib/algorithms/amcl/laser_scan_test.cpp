@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 namespace playerkit::amcl {
-namespace {
+namespace laser_scan_test {
 
 LaserScan straight_scan(std::size_t count) {
   LaserScan scan;
@@ -70,5 +70,5 @@ TEST(PrepareBeams, RejectsMismatchedArrays) {
   EXPECT_THROW(prepare_beams(scan, 30, beams), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace laser_scan_test
 }  // namespace playerkit::amcl

@@ -9,7 +9,7 @@
 #include <numbers>
 
 namespace playerkit::amcl {
-namespace {
+namespace likelihood_field_model_test {
 
 using test::scores;
 
@@ -98,5 +98,5 @@ TEST(LikelihoodFieldModel, SensorOffsetIsApplied) {
   EXPECT_GT(s[0] - s[1], 3.0);
 }
 
-}  // namespace
+}  // namespace likelihood_field_model_test
 }  // namespace playerkit::amcl

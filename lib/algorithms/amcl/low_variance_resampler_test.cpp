@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 namespace playerkit::amcl {
-namespace {
+namespace low_variance_resampler_test {
 
 std::vector<std::size_t> counts_of(const std::vector<std::uint32_t>& indices, std::size_t n) {
   std::vector<std::size_t> counts(n, 0);
@@ -84,5 +84,5 @@ TEST(LowVarianceResample, RejectsWeightsWithoutMass) {
                std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace low_variance_resampler_test
 }  // namespace playerkit::amcl

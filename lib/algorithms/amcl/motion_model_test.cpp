@@ -8,7 +8,7 @@
 #include <numbers>
 
 namespace playerkit::amcl {
-namespace {
+namespace motion_model_test {
 
 constexpr double pi = std::numbers::pi;
 
@@ -148,5 +148,5 @@ TEST(MotionModel, NoiseCoefficientsComeFromTheNamedParameters) {
   EXPECT_EQ(n.strafe_from_translation, 5);
 }
 
-}  // namespace
+}  // namespace motion_model_test
 }  // namespace playerkit::amcl

@@ -10,7 +10,7 @@
 #include <numbers>
 
 namespace playerkit::amcl {
-namespace {
+namespace particle_set_test {
 
 constexpr double pi = std::numbers::pi;
 
@@ -174,5 +174,5 @@ TEST(AdaptiveResampler, InjectsRandomFreePosesOnTopOfTheKldCount) {
   EXPECT_NEAR(static_cast<double>(random) / static_cast<double>(total), 0.3, 0.02);
 }
 
-}  // namespace
+}  // namespace particle_set_test
 }  // namespace playerkit::amcl

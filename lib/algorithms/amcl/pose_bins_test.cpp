@@ -7,7 +7,7 @@
 #include <tuple>
 
 namespace playerkit::amcl {
-namespace {
+namespace pose_bins_test {
 
 constexpr double pi = std::numbers::pi;
 
@@ -61,5 +61,5 @@ TEST(PoseBinning, KeysOfDistinctNearbyBinsDiffer) {
   EXPECT_EQ(keys.size(), 7u * 7u * 36u);
 }
 
-}  // namespace
+}  // namespace pose_bins_test
 }  // namespace playerkit::amcl

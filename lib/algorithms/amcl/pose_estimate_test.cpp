@@ -7,7 +7,7 @@
 #include <random>
 
 namespace playerkit::amcl {
-namespace {
+namespace pose_estimate_test {
 
 constexpr double pi = std::numbers::pi;
 constexpr double ten_degrees = pi / 18;
@@ -80,5 +80,5 @@ TEST(PoseEstimate, ChainOfTouchingBinsIsOneCluster) {
   EXPECT_NEAR(clusters[0].mean.x, 0.4 * 9.5, 1e-9);
 }
 
-}  // namespace
+}  // namespace pose_estimate_test
 }  // namespace playerkit::amcl

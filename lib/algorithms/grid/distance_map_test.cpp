@@ -8,7 +8,7 @@
 #include <random>
 
 namespace playerkit::grid {
-namespace {
+namespace distance_map_test {
 
 // The definition, O(cells x obstacles).
 double brute_force_distance(const OccupancyGrid& grid, int col, int row, double max_distance,
@@ -157,5 +157,5 @@ TEST(DistanceMap, RejectsNegativeMaxDistance) {
   EXPECT_THROW(DistanceMap(OccupancyGrid(2, 2, 1.0, {0, 0}), -1.0), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace distance_map_test
 }  // namespace playerkit::grid

@@ -10,7 +10,7 @@
 #include <vector>
 
 namespace playerkit::grid {
-namespace {
+namespace occupancy_grid_builder_test {
 
 constexpr double kHalfSide = 3.02;  // walls at x, y = +-3.02: inside cells, not on borders
 constexpr int kBeams = 720;
@@ -209,5 +209,5 @@ TEST(OccupancyGridBuilder, RejectsBadParameters) {
   EXPECT_THROW(OccupancyGridBuilder({.margin = -0.1}), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace occupancy_grid_builder_test
 }  // namespace playerkit::grid

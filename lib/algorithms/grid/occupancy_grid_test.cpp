@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 namespace playerkit::grid {
-namespace {
+namespace occupancy_grid_test {
 
 TEST(OccupancyGrid, RejectsNonPositiveSizeOrResolution) {
   EXPECT_THROW(OccupancyGrid(0, 5, 0.1, {0, 0}), std::invalid_argument);
@@ -74,5 +74,5 @@ TEST(OccupancyGrid, StateAtWorldIsUnknownOutside) {
   EXPECT_EQ(grid.state_at_world({1e30, -1e30}), CellState::unknown);
 }
 
-}  // namespace
+}  // namespace occupancy_grid_test
 }  // namespace playerkit::grid

@@ -12,7 +12,7 @@
 #include <vector>
 
 namespace playerkit::grid {
-namespace {
+namespace range_caster_test {
 
 constexpr RayStop kBothStops[] = {RayStop::occupied, RayStop::occupied_or_unknown};
 
@@ -208,5 +208,5 @@ TEST(RangeCaster, DegenerateInputsAsCastRay) {
   EXPECT_THROW(RangeCaster(grid, RayStop::occupied, 0.0), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace range_caster_test
 }  // namespace playerkit::grid

@@ -11,7 +11,7 @@
 #include <vector>
 
 namespace playerkit::grid {
-namespace {
+namespace ray_cast_test {
 
 constexpr double kResolution = 0.05;
 
@@ -189,5 +189,5 @@ TEST(TraceCells, SameCellIsVisitedOnce) {
   EXPECT_EQ(visits, 1);
 }
 
-}  // namespace
+}  // namespace ray_cast_test
 }  // namespace playerkit::grid

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::client {
-namespace {
+namespace bumper_test {
 
 TEST(TypedBumper, PressedFlags) {
   protocol::BumperData d;
@@ -28,5 +28,5 @@ TEST(TypedBumper, GeometryGolden) {
   EXPECT_DOUBLE_EQ(defs[0].radius, 0.25);
 }
 
-}  // namespace
+}  // namespace bumper_test
 }  // namespace playerkit::client

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::client {
-namespace {
+namespace fiducial_test {
 
 TEST(TypedFiducial, DetectionsGolden) {
   protocol::FiducialData d;
@@ -65,5 +65,5 @@ TEST(TypedFiducial, FovRoundTripsAndClamps) {
   EXPECT_THROW((void)set_fov_request({0, std::numeric_limits<double>::infinity(), 1}), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace fiducial_test
 }  // namespace playerkit::client

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::client {
-namespace {
+namespace gps_test {
 
 TEST(TypedGps, FixGolden) {
   protocol::GpsData d;
@@ -42,5 +42,5 @@ TEST(TypedGps, FractionsOfADegree) {
   EXPECT_DOUBLE_EQ(f.longitude, -0.5);
 }
 
-}  // namespace
+}  // namespace gps_test
 }  // namespace playerkit::client

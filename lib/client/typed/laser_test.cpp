@@ -7,7 +7,7 @@
 #include "protocol/si_units.hpp"
 
 namespace playerkit::client {
-namespace {
+namespace laser_test {
 
 constexpr double kHalfPi = 1.5707963267948966;
 constexpr double kHalfDegree = 0.008726646259971648;
@@ -115,5 +115,5 @@ TEST(TypedLaser, SetConfigRoundsToHundredthsOfADegree) {
   EXPECT_THROW(set_config_request({std::nan(""), 0, 0, 1, false}), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace laser_test
 }  // namespace playerkit::client

@@ -7,7 +7,7 @@
 #include "protocol/binary_codec.hpp"
 
 namespace playerkit::client {
-namespace {
+namespace localize_test {
 
 TEST(TypedLocalize, HypothesesGolden) {
   protocol::LocalizeData d;
@@ -70,5 +70,5 @@ TEST(TypedLocalize, SetPoseRefusesNonFinite) {
   }
 }
 
-}  // namespace
+}  // namespace localize_test
 }  // namespace playerkit::client

@@ -7,7 +7,7 @@
 #include "protocol/messages/all.hpp"
 
 namespace playerkit::client {
-namespace {
+namespace message_as_test {
 
 using protocol::MessageType;
 
@@ -118,5 +118,5 @@ TEST(TypedMessageAs, ARepliedStructSharedAcrossInterfacesIsAccepted) {
   EXPECT_EQ(reply_as<protocol::PowerData>(power, protocol::kMainPowerReq).charge, 125);
 }
 
-}  // namespace
+}  // namespace message_as_test
 }  // namespace playerkit::client

@@ -7,7 +7,7 @@
 #include "protocol/binary_codec.hpp"
 
 namespace playerkit::client {
-namespace {
+namespace position3d_test {
 
 constexpr double kArcSecond = 4.84813681109536e-06;  // rad
 
@@ -68,5 +68,5 @@ TEST(TypedPosition3d, CommandClampsAndRefusesNonFinite) {
   EXPECT_THROW((void)to_wire(c), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace position3d_test
 }  // namespace playerkit::client

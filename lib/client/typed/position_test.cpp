@@ -10,7 +10,7 @@
 #include "protocol/si_units.hpp"
 
 namespace playerkit::client {
-namespace {
+namespace position_test {
 
 constexpr double kPi = 3.141592653589793;
 constexpr double kOneDegree = 0.017453292519943295;
@@ -118,5 +118,5 @@ TEST(TypedPosition, GeometryAndSetOdom) {
   EXPECT_EQ(odom.theta, -45);
 }
 
-}  // namespace
+}  // namespace position_test
 }  // namespace playerkit::client

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::client {
-namespace {
+namespace power_test {
 
 TEST(TypedPower, DecivoltsToVolts) {
   EXPECT_DOUBLE_EQ(to_si(protocol::PowerData{125}).volts, 12.5);
@@ -11,5 +11,5 @@ TEST(TypedPower, DecivoltsToVolts) {
   EXPECT_DOUBLE_EQ(to_si(protocol::PowerData{0}).volts, 0.0);
 }
 
-}  // namespace
+}  // namespace power_test
 }  // namespace playerkit::client

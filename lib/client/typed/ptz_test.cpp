@@ -7,7 +7,7 @@
 #include "protocol/binary_codec.hpp"
 
 namespace playerkit::client {
-namespace {
+namespace ptz_test {
 
 constexpr double kOneDegree = 0.017453292519943295;
 
@@ -49,5 +49,5 @@ TEST(TypedPtz, CommandClampsToInt16AndRefusesNaN) {
                std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace ptz_test
 }  // namespace playerkit::client

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::client {
-namespace {
+namespace ranging_test {
 
 TEST(TypedRanging, SonarRangesAndPoses) {
   protocol::SonarData d;
@@ -54,5 +54,5 @@ TEST(TypedRanging, CountsBeyondTheArrayAreCut) {
   EXPECT_EQ(to_si(d).ranges.size(), protocol::kSonarMaxSamples);
 }
 
-}  // namespace
+}  // namespace ranging_test
 }  // namespace playerkit::client

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::client {
-namespace {
+namespace truth_test {
 
 TEST(TypedTruth, PoseGolden) {
   const Pose2D data = to_si(protocol::TruthData{1000, -2000, -180});
@@ -35,5 +35,5 @@ TEST(TypedTruth, SetPoseRoundsAndRoundTrips) {
   EXPECT_THROW((void)set_pose_request({std::numeric_limits<double>::quiet_NaN(), 0, 0}), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace truth_test
 }  // namespace playerkit::client

@@ -17,7 +17,7 @@
 #include "protocol/messages/localize.hpp"
 
 namespace playerkit::drivers {
-namespace {
+namespace amcl_driver_test {
 
 using namespace std::chrono_literals;
 using protocol::kLocalizeCode;
@@ -255,5 +255,5 @@ TEST(AmclDriverSpec, ServesLocalizeReadOnlyWithAQueueOf100) {
   EXPECT_EQ(spec.limits.request_queue, 100u);
 }
 
-}  // namespace
+}  // namespace amcl_driver_test
 }  // namespace playerkit::drivers

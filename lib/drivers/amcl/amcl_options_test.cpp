@@ -12,7 +12,7 @@
 #include "drivers/test_support.hpp"
 
 namespace playerkit::drivers {
-namespace {
+namespace amcl_options_test {
 
 const std::string kMap = testing::cave_map_path().string();
 
@@ -123,5 +123,5 @@ TEST(AmclOptions, ErrorsReachTheServerAsConfigErrors) {
   EXPECT_THROW(builtin.load("localize:0 ( driver \"amcl\" laser_model \"x\" " + kCave + ")\n"), config::ConfigError);
 }
 
-}  // namespace
+}  // namespace amcl_options_test
 }  // namespace playerkit::drivers

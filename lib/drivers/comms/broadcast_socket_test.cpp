@@ -9,7 +9,7 @@
 #include "drivers/comms/loopback_test_support.hpp"
 
 namespace playerkit::drivers {
-namespace {
+namespace broadcast_socket_test {
 
 using namespace std::chrono_literals;
 
@@ -83,5 +83,5 @@ TEST(BroadcastSocket, ClosesItsDescriptorOnceWhenDestroyed) {
   EXPECT_TRUE(testing::port_is_free(port));
 }
 
-}  // namespace
+}  // namespace broadcast_socket_test
 }  // namespace playerkit::drivers

@@ -18,7 +18,7 @@
 #include "protocol/messages/comms.hpp"
 
 namespace playerkit::drivers {
-namespace {
+namespace udpbroadcast_driver_test {
 
 using namespace std::chrono_literals;
 using protocol::kCommsCode;
@@ -237,5 +237,5 @@ TEST_F(UdpBroadcastTest, PortHeldByAnotherProgramRefusesTheSubscription) {
   EXPECT_NE(errors->lines[0].find(std::to_string(port)), std::string::npos) << errors->lines[0];
 }
 
-}  // namespace
+}  // namespace udpbroadcast_driver_test
 }  // namespace playerkit::drivers

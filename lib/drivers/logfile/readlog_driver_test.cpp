@@ -13,7 +13,7 @@
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::drivers {
-namespace {
+namespace readlog_driver_test {
 
 using namespace std::chrono_literals;
 using protocol::kPositionCode;
@@ -268,5 +268,5 @@ TEST_F(ReadlogTest, BurstGoesAsFastAsTheSlowestReaderAndDropsNothing) {
   device.unsubscribe();
 }
 
-}  // namespace
+}  // namespace readlog_driver_test
 }  // namespace playerkit::drivers

@@ -15,7 +15,7 @@
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::drivers {
-namespace {
+namespace writelog_driver_test {
 
 using namespace std::chrono_literals;
 using protocol::kNullCode;
@@ -227,5 +227,5 @@ TEST(WritelogDefaults, NullSectionsWithoutDriverAreWritelog) {
   EXPECT_EQ(builtin.device(kNullCode).info().access, protocol::Access::kRead);
 }
 
-}  // namespace
+}  // namespace writelog_driver_test
 }  // namespace playerkit::drivers

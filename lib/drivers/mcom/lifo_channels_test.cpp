@@ -5,7 +5,7 @@
 #include <string>
 
 namespace playerkit::drivers {
-namespace {
+namespace lifo_channels_test {
 
 protocol::McomData message(std::string_view text) {
   protocol::McomData data;
@@ -100,5 +100,5 @@ TEST(LifoChannels, ClearEmptiesOneStackAndKeepsItsCapacity) {
   EXPECT_EQ(channels.size({9, "nothing"}), 0u);
 }
 
-}  // namespace
+}  // namespace lifo_channels_test
 }  // namespace playerkit::drivers

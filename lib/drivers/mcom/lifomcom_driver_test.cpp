@@ -14,7 +14,7 @@
 #include "protocol/messages/mcom.hpp"
 
 namespace playerkit::drivers {
-namespace {
+namespace lifomcom_driver_test {
 
 using protocol::kMcomCode;
 using protocol::McomConfig;
@@ -270,5 +270,5 @@ TEST_F(LifomcomTest, PublishesNoData) {
   EXPECT_EQ(device->latest_data()->sequence, 0u);
 }
 
-}  // namespace
+}  // namespace lifomcom_driver_test
 }  // namespace playerkit::drivers

@@ -10,7 +10,7 @@
 #include "protocol/message.hpp"
 
 namespace playerkit::drivers {
-namespace {
+namespace null_driver_test {
 
 using protocol::kNullCode;
 using protocol::MessageType;
@@ -65,5 +65,5 @@ TEST_F(NullDriverTest, AcceptsNoCommands) {
   EXPECT_FALSE(device.take_command().has_value());
 }
 
-}  // namespace
+}  // namespace null_driver_test
 }  // namespace playerkit::drivers

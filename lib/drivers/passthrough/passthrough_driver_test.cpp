@@ -17,7 +17,7 @@
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::drivers {
-namespace {
+namespace passthrough_driver_test {
 
 using protocol::Access;
 
@@ -111,5 +111,5 @@ TEST(Passthrough, NoServerAtTheRemotePortRefusesTheSubscriptionWithALogLine) {
   EXPECT_NE(lines[0].find("127.0.0.1:" + port), std::string::npos) << lines[0];
 }
 
-}  // namespace
+}  // namespace passthrough_driver_test
 }  // namespace playerkit::drivers

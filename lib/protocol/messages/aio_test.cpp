@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace aio_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -56,5 +56,5 @@ TEST(AioGolden, CountAndLengthAreChecked) {
   EXPECT_TRUE(Rejects<AioData>(golden::with_extra_byte(three_samples_bytes()), "", 33, 34));
 }
 
-}  // namespace
+}  // namespace aio_test
 }  // namespace playerkit::protocol

@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace audio_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -66,5 +66,5 @@ TEST(AudioGolden, Command) {
   EXPECT_TRUE(Rejects<AudioCommand>(golden::with_extra_byte(golden_bytes), "", 6, 7));
 }
 
-}  // namespace
+}  // namespace audio_test
 }  // namespace playerkit::protocol

@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace audiodsp_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -94,5 +94,5 @@ TEST(AudioDspGolden, Config) {
   EXPECT_TRUE(Rejects<AudioDspConfig>(golden::with_extra_byte(golden_bytes), "", 6, 7));
 }
 
-}  // namespace
+}  // namespace audiodsp_test
 }  // namespace playerkit::protocol

@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace audiomixer_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -67,5 +67,5 @@ TEST(AudioMixerGolden, Command) {
   EXPECT_TRUE(Rejects<AudioMixerCommand>(golden::with_extra_byte(golden_bytes), "", 5, 6));
 }
 
-}  // namespace
+}  // namespace audiomixer_test
 }  // namespace playerkit::protocol

@@ -8,7 +8,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace blinkenlight_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -33,5 +33,5 @@ TEST(BlinkenlightGolden, DataPacket) {
   EXPECT_TRUE(Rejects<BlinkenlightData>(golden::with_extra_byte(golden_bytes), "", 3, 4));
 }
 
-}  // namespace
+}  // namespace blinkenlight_test
 }  // namespace playerkit::protocol

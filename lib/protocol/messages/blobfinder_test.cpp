@@ -8,7 +8,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace blobfinder_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -265,5 +265,5 @@ TEST(BlobfinderGolden, ImagerConfig) {
   EXPECT_TRUE(Rejects<BlobfinderImagerConfig>(golden::with_extra_byte(golden_bytes), "", 7, 8));
 }
 
-}  // namespace
+}  // namespace blobfinder_test
 }  // namespace playerkit::protocol

@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace bps_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -77,5 +77,5 @@ TEST(BpsGolden, BeaconRequest) {
   EXPECT_TRUE(Rejects<BpsBeacon>(golden::with_extra_byte(golden_bytes), "", 26, 27));
 }
 
-}  // namespace
+}  // namespace bps_test
 }  // namespace playerkit::protocol

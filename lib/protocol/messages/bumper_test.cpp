@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace bumper_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -101,5 +101,5 @@ TEST(BumperGolden, GeometryCountAndLengthAreChecked) {
   EXPECT_TRUE(Rejects<BumperGeom>(golden::with_extra_byte(two_definitions_bytes()), "", 323, 324));
 }
 
-}  // namespace
+}  // namespace bumper_test
 }  // namespace playerkit::protocol

@@ -8,7 +8,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace camera_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -69,5 +69,5 @@ TEST(CameraGolden, ImageSizeLargerThanTheImageBytesPresentIsRejected) {
   EXPECT_THROW((void)decode<CameraData>(bytes), DecodeError);
 }
 
-}  // namespace
+}  // namespace camera_test
 }  // namespace playerkit::protocol

@@ -8,7 +8,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace comms_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -75,5 +75,5 @@ TEST(CommsGolden, PayloadLimitIs8160Bytes) {
   EXPECT_THROW((void)encode(too_big), EncodeError);
 }
 
-}  // namespace
+}  // namespace comms_test
 }  // namespace playerkit::protocol

@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace descartes_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -48,5 +48,5 @@ TEST(DescartesGolden, Config) {
   EXPECT_TRUE(Rejects<DescartesConfig>(golden::with_extra_byte(golden_bytes), "", 6, 7));
 }
 
-}  // namespace
+}  // namespace descartes_test
 }  // namespace playerkit::protocol

@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace dio_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -32,5 +32,5 @@ TEST(DioGolden, DataPacket) {
   EXPECT_TRUE(Rejects<DioData>(golden::with_extra_byte(golden_bytes), "", 5, 6));
 }
 
-}  // namespace
+}  // namespace dio_test
 }  // namespace playerkit::protocol

@@ -8,7 +8,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace fiducial_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -191,5 +191,5 @@ TEST(FiducialGolden, ExchangeRequest) {
   EXPECT_TRUE(Rejects<FiducialMsgTxRxRequest>(Bytes(golden_bytes.begin(), golden_bytes.begin() + 38), "msg", 41, 38));
 }
 
-}  // namespace
+}  // namespace fiducial_test
 }  // namespace playerkit::protocol

@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace gps_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -65,5 +65,5 @@ TEST(GpsGolden, TruncatedOrOversizedIsRejected) {
   EXPECT_TRUE(Rejects<GpsData>(golden::with_extra_byte(kDataBytes), "", 40, 41));
 }
 
-}  // namespace
+}  // namespace gps_test
 }  // namespace playerkit::protocol

@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace gripper_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -46,5 +46,5 @@ TEST(GripperGolden, Command) {
   EXPECT_TRUE(Rejects<GripperCommand>(golden::with_extra_byte(golden_bytes), "", 2, 3));
 }
 
-}  // namespace
+}  // namespace gripper_test
 }  // namespace playerkit::protocol

@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace header_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -108,5 +108,5 @@ TEST(HeaderGolden, TruncatedOrOversizedHeaderIsRejected) {
   EXPECT_TRUE(Rejects<MessageHeader>(golden::with_extra_byte(golden_bytes), "", 32, 33));
 }
 
-}  // namespace
+}  // namespace header_test
 }  // namespace playerkit::protocol

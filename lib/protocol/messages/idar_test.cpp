@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace idar_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -102,5 +102,5 @@ TEST(IdarGolden, ConfigWithTxLengthLargerThan16IsRejected) {
   EXPECT_THROW((void)decode<IdarConfig>(bytes), DecodeError);
 }
 
-}  // namespace
+}  // namespace idar_test
 }  // namespace playerkit::protocol

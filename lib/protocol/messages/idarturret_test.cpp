@@ -10,7 +10,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace idarturret_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -112,5 +112,5 @@ TEST(IdarTurretGolden, Config) {
   EXPECT_TRUE(Rejects<IdarTurretConfig>(golden::with_extra_byte(two_transmissions_bytes()), "", 145, 146));
 }
 
-}  // namespace
+}  // namespace idarturret_test
 }  // namespace playerkit::protocol

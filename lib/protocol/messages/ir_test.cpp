@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace ir_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -121,5 +121,5 @@ TEST(IrGolden, PowerRequest) {
   EXPECT_TRUE(Rejects<IrPowerRequest>(Bytes{0x02}, "state", 2, 1));
 }
 
-}  // namespace
+}  // namespace ir_test
 }  // namespace playerkit::protocol

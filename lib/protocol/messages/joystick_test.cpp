@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace joystick_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -34,5 +34,5 @@ TEST(JoystickGolden, DataPacket) {
   EXPECT_TRUE(Rejects<JoystickData>(golden::with_extra_byte(golden_bytes), "", 4, 5));
 }
 
-}  // namespace
+}  // namespace joystick_test
 }  // namespace playerkit::protocol

@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace laser_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -176,5 +176,5 @@ TEST(LaserGolden, PowerConfig) {
   EXPECT_TRUE(Rejects<LaserPowerConfig>(golden::drop_last(golden_bytes), "value", 2, 1));
 }
 
-}  // namespace
+}  // namespace laser_test
 }  // namespace playerkit::protocol

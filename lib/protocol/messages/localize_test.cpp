@@ -8,7 +8,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace localize_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -282,5 +282,5 @@ TEST(LocalizeGolden, MapDataReplyCarriesTheCells) {
   EXPECT_TRUE(Rejects<LocalizeMapData>(golden::with_extra_byte(largest), "", 4096, 4097));
 }
 
-}  // namespace
+}  // namespace localize_test
 }  // namespace playerkit::protocol

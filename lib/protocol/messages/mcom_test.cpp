@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace mcom_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -91,5 +91,5 @@ TEST(McomGolden, MessageTextEndsAtTheFirstNulInJson) {
   EXPECT_EQ(reencoded, (WireBytes(129).at(0, {0x01}).at(1, {'a'}).zeros(2, 127).done()));
 }
 
-}  // namespace
+}  // namespace mcom_test
 }  // namespace playerkit::protocol

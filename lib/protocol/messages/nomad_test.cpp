@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace nomad_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -82,5 +82,5 @@ TEST(NomadGolden, Command) {
   EXPECT_TRUE(Rejects<NomadCommand>(golden::with_extra_byte(golden_bytes), "", 12, 13));
 }
 
-}  // namespace
+}  // namespace nomad_test
 }  // namespace playerkit::protocol

@@ -9,7 +9,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace player_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -236,5 +236,5 @@ TEST(PlayerGolden, NameServiceRequest) {
   EXPECT_TRUE(Rejects<NameServiceRequest>(golden::with_extra_byte(golden_bytes), "", 68, 69));
 }
 
-}  // namespace
+}  // namespace player_test
 }  // namespace playerkit::protocol

@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace position3d_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -134,5 +134,5 @@ TEST(Position3dGolden, PowerConfig) {
   EXPECT_TRUE(Rejects<Position3dPowerConfig>(golden::with_extra_byte(golden_bytes), "", 2, 3));
 }
 
-}  // namespace
+}  // namespace position3d_test
 }  // namespace playerkit::protocol

@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace position_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -200,5 +200,5 @@ TEST(PositionGolden, RmpConfig) {
   EXPECT_TRUE(Rejects<RmpConfig>(golden::with_extra_byte(golden_bytes), "", 3, 4));
 }
 
-}  // namespace
+}  // namespace position_test
 }  // namespace playerkit::protocol

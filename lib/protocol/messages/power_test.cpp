@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace power_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -46,5 +46,5 @@ TEST(PowerGolden, ConfigRequest) {
   EXPECT_TRUE(Rejects<PowerConfig>(Bytes{0x0E, 0x00}, "", 1, 2));
 }
 
-}  // namespace
+}  // namespace power_test
 }  // namespace playerkit::protocol

@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace ptz_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -103,5 +103,5 @@ TEST(PtzGolden, VelocityModeConfig) {
   EXPECT_TRUE(Rejects<PtzVelocityModeConfig>(golden::drop_last(golden_bytes), "mode", 2, 1));
 }
 
-}  // namespace
+}  // namespace ptz_test
 }  // namespace playerkit::protocol

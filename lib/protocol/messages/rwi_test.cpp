@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace rwi_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -32,5 +32,5 @@ TEST(RwiGolden, Config) {
   EXPECT_TRUE(Rejects<RwiConfig>(golden::with_extra_byte(golden_bytes), "", 2, 3));
 }
 
-}  // namespace
+}  // namespace rwi_test
 }  // namespace playerkit::protocol

@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace simulation_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -39,5 +39,5 @@ TEST(SimulationGolden, Command) {
   EXPECT_TRUE(Rejects<SimulationCommand>(Bytes{0x5B, 0x00}, "", 1, 2));
 }
 
-}  // namespace
+}  // namespace simulation_test
 }  // namespace playerkit::protocol

@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace sonar_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -131,5 +131,5 @@ TEST(SonarGolden, PowerConfig) {
   EXPECT_TRUE(Rejects<SonarPowerConfig>(golden::with_extra_byte(golden_bytes), "", 2, 3));
 }
 
-}  // namespace
+}  // namespace sonar_test
 }  // namespace playerkit::protocol

@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace sound_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -31,5 +31,5 @@ TEST(SoundGolden, Command) {
   EXPECT_TRUE(Rejects<SoundCommand>(golden::with_extra_byte(golden_bytes), "", 2, 3));
 }
 
-}  // namespace
+}  // namespace sound_test
 }  // namespace playerkit::protocol

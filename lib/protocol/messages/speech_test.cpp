@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace speech_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -48,5 +48,5 @@ TEST(SpeechGolden, TruncatedOrOversizedIsRejected) {
   EXPECT_TRUE(Rejects<SpeechCommand>(golden::with_extra_byte(golden_bytes), "", 256, 257));
 }
 
-}  // namespace
+}  // namespace speech_test
 }  // namespace playerkit::protocol

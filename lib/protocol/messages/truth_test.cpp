@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace truth_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -57,5 +57,5 @@ TEST(TruthGolden, FiducialIdRequest) {
   EXPECT_TRUE(Rejects<TruthFiducialId>(golden::drop_last(golden_bytes), "id", 3, 2));
 }
 
-}  // namespace
+}  // namespace truth_test
 }  // namespace playerkit::protocol

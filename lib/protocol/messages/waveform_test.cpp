@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace waveform_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -64,5 +64,5 @@ TEST(WaveformGolden, TruncatedOrOversizedIsRejected) {
   EXPECT_TRUE(Rejects<WaveformData>(golden::with_extra_byte(five_samples_bytes()), "", 4106, 4107));
 }
 
-}  // namespace
+}  // namespace waveform_test
 }  // namespace playerkit::protocol

@@ -7,7 +7,7 @@
 #include "protocol/messages/golden_test_util.hpp"
 
 namespace playerkit::protocol {
-namespace {
+namespace wifi_test {
 
 using golden::Bytes;
 using golden::DecodesTo;
@@ -111,5 +111,5 @@ TEST(WifiGolden, DataCountAndLengthAreChecked) {
   EXPECT_TRUE(Rejects<WifiData>(golden::with_extra_byte(two_links_bytes()), "", 658, 659));
 }
 
-}  // namespace
+}  // namespace wifi_test
 }  // namespace playerkit::protocol
