@@ -1,0 +1,153 @@
+#include "emulators/runner/emulator_runner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <thread>
+
+#include "links/open_link.hpp"
+
+namespace playerkit::emulators {
+namespace emulator_runner_test {
+
+using namespace std::chrono_literals;
+
+// A device that answers "?" with "!" + the baud it was asked at, and says
+// "tick" every 100 ms once asked "go".
+class ToyDevice final : public DeviceEmulator {
+ public:
+  std::string_view protocol_name() const override { return "toy"; }
+  void receive(std::span<const std::uint8_t> bytes, Duration now, int host_baud) override {
+    for (std::uint8_t byte : bytes) {
+      if (byte == '?') {
+        const std::string answer = "!" + std::to_string(host_baud);
+        out_.push_back({{answer.begin(), answer.end()}, false});
+      } else if (byte == 'g') {
+        ticking_ = true;
+        next_tick_ = now;
+      }
+    }
+    ++receives;
+  }
+  void advance(Duration now) override {
+    while (ticking_ && next_tick_ <= now) {
+      out_.push_back({{'t', 'i', 'c', 'k'}, true});
+      next_tick_ += 100ms;
+    }
+  }
+  Duration next_deadline() const override { return ticking_ ? next_tick_ : Duration::max(); }
+  std::vector<Telegram> take_output() override { return std::exchange(out_, {}); }
+  void host_disconnected(Duration) override { ++disconnects; }
+  std::string describe() const override { return "toy"; }
+
+  int receives = 0;
+  int disconnects = 0;
+
+ private:
+  std::vector<Telegram> out_;
+  bool ticking_ = false;
+  Duration next_tick_{0};
+};
+
+std::string read_for(links::ByteLink& link, std::chrono::milliseconds how_long) {
+  std::string got;
+  const auto until = links::deadline_in(how_long);
+  std::array<std::uint8_t, 256> buffer{};
+  while (links::LinkClock::now() < until) {
+    const std::size_t n = link.read_some(buffer, until);
+    got.append(buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(n));
+  }
+  return got;
+}
+
+void send(links::ByteLink& link, std::string_view text) {
+  link.write_all(std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()),
+                 links::deadline_in(1s));
+}
+
+TEST(EmulatorRunner, ADriverOnThePtyTalksToTheEmulatorAtItsBaudRate) {
+  EmulatorRunner runner(std::make_unique<ToyDevice>(), PtyEndpoint{});
+  auto link = links::open_link(runner.device_path(), {.baud = 38400});
+  send(*link, "?");
+  EXPECT_EQ(read_for(*link, 300ms), "!38400");
+  ASSERT_TRUE(link->set_baud(9600));
+  send(*link, "?");
+  EXPECT_EQ(read_for(*link, 300ms), "!9600");
+}
+
+TEST(EmulatorRunner, PeriodicOutputArrivesOnTime) {
+  EmulatorRunner runner(std::make_unique<ToyDevice>(), PtyEndpoint{});
+  auto link = links::open_link(runner.device_path(), {});
+  send(*link, "g");
+  const std::string got = read_for(*link, 1050ms);
+  // 10 or 11 ticks in a second at 10 Hz (bounded, not timed to the ms).
+  const auto ticks = static_cast<int>(got.size() / 4);
+  EXPECT_GE(ticks, 8);
+  EXPECT_LE(ticks, 13);
+}
+
+TEST(EmulatorRunner, TheSymlinkNamesThePtyAndGoesAwayAfterwards) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("playerkit-runner-test-" + std::to_string(::getpid()));
+  {
+    EmulatorRunner runner(std::make_unique<ToyDevice>(), PtyEndpoint{path});
+    EXPECT_EQ(runner.device_path(), path.string());
+    auto link = links::open_link(path.string(), {});
+    send(*link, "?");
+    EXPECT_EQ(read_for(*link, 300ms).substr(0, 1), "!");
+  }
+  EXPECT_FALSE(std::filesystem::exists(std::filesystem::symlink_status(path)));
+}
+
+TEST(EmulatorRunner, AHostClosingThePortIsSeenAndMayComeBack) {
+  EmulatorRunner runner(std::make_unique<ToyDevice>(), PtyEndpoint{});
+  for (int session = 0; session < 2; ++session) {
+    auto link = links::open_link(runner.device_path(), {});
+    send(*link, "?");
+    EXPECT_EQ(read_for(*link, 300ms).substr(0, 1), "!");
+  }
+  bool seen = false;
+  for (int i = 0; i < 40 && !seen; ++i) {
+    seen = runner.with_emulator<ToyDevice>([](ToyDevice& d) { return d.disconnects >= 2; });
+    if (!seen) std::this_thread::sleep_for(50ms);
+  }
+  EXPECT_TRUE(seen);
+  EXPECT_GE(runner.stats().host_connects, 2u);
+}
+
+TEST(EmulatorRunner, WorksOnALoopbackTcpPortToo) {
+  EmulatorRunner runner(std::make_unique<ToyDevice>(), TcpEndpoint{});
+  ASSERT_EQ(runner.device_path().rfind("tcp:127.0.0.1:", 0), 0u) << runner.device_path();
+  auto link = links::open_link(runner.device_path(), {});
+  send(*link, "?");
+  EXPECT_EQ(read_for(*link, 300ms), "!0");  // no line speed over TCP
+}
+
+TEST(EmulatorRunner, AVanishedLineCarriesNothingUntilItComesBack) {
+  FaultPlan plan;
+  add_fault(plan, "vanish=0:0.6");
+  EmulatorRunner runner(std::make_unique<ToyDevice>(), PtyEndpoint{}, plan);
+  auto link = links::open_link(runner.device_path(), {});
+  send(*link, "?");
+  EXPECT_EQ(read_for(*link, 300ms), "");  // lost: the cable is out
+  std::this_thread::sleep_for(400ms);
+  send(*link, "?");
+  EXPECT_EQ(read_for(*link, 300ms), "!9600");  // back
+}
+
+TEST(EmulatorRunner, BadChecksumsReachTheHost) {
+  FaultPlan plan;
+  add_fault(plan, "bad-checksum=1");
+  EmulatorRunner runner(std::make_unique<ToyDevice>(), PtyEndpoint{}, plan);
+  auto link = links::open_link(runner.device_path(), {});
+  send(*link, "g");
+  const std::string got = read_for(*link, 350ms);
+  ASSERT_GE(got.size(), 4u);
+  EXPECT_EQ(got.substr(0, 3), "tic");
+  EXPECT_NE(got[3], 'k');  // the "checksum" byte was flipped
+  EXPECT_GE(runner.stats().faults.bad_checksums, 1u);
+}
+
+}  // namespace emulator_runner_test
+}  // namespace playerkit::emulators
