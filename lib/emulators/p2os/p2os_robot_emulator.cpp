@@ -150,10 +150,12 @@ void P2osRobotEmulator::advance(Duration now) {
       watchdog_tripped_ = true;
     }
     if (const auto stale = stale_input_deadline(); stale && *stale <= next) {
-      input_.erase(input_.begin());
-      ++counters_.noise_bytes;
       input_waiting_since_.reset();
-      parse_input(next);
+      if (!input_.empty()) {
+        input_.erase(input_.begin());
+        ++counters_.noise_bytes;
+        parse_input(next);
+      }
     }
     if (connected() && next_sip_ <= next) {
       if (gyro_on_) send_gyro_packet();
