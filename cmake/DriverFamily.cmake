@@ -1,5 +1,6 @@
 # playerkit_driver_family(NAME family HEADERS header... SPECS spec_function...
-#                         [DEPENDS target...] [TEST_NEEDS family...] [DEFAULT ON|OFF])
+#                         [DEPENDS target...] [TEST_NEEDS family...]
+#                         [TEST_LIBS target...] [DEFAULT ON|OFF])
 #
 # One family of built-in drivers (lib/drivers/<family>): library
 # playerkit_drivers_<family> of the folder's sources, test program
@@ -10,8 +11,9 @@
 # built-in drivers is generated from the families built (builtin.cpp).
 # TEST_NEEDS: families whose drivers this family's tests use (amcl's tests
 # replay logs through readlog); without them the tests are not built.
+# TEST_LIBS: more libraries for the tests only (the emulators).
 function(playerkit_driver_family)
-  cmake_parse_arguments(ARG "" "NAME;DEFAULT" "HEADERS;SPECS;DEPENDS;TEST_NEEDS" ${ARGN})
+  cmake_parse_arguments(ARG "" "NAME;DEFAULT" "HEADERS;SPECS;DEPENDS;TEST_NEEDS;TEST_LIBS" ${ARGN})
   if(NOT DEFINED ARG_DEFAULT)
     set(ARG_DEFAULT ON)
   endif()
@@ -24,6 +26,9 @@ function(playerkit_driver_family)
 
   file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
   list(FILTER sources EXCLUDE REGEX "_test\\.cpp$")
+  if(NOT sources)
+    return()  # a family still being written
+  endif()
   add_library(playerkit_drivers_${ARG_NAME} ${sources})
   target_include_directories(playerkit_drivers_${ARG_NAME} PUBLIC ${PROJECT_SOURCE_DIR}/lib)
   target_link_libraries(playerkit_drivers_${ARG_NAME}
@@ -48,7 +53,7 @@ function(playerkit_driver_family)
       # The tests build devices from config text through the built-in list.
       set_property(GLOBAL APPEND PROPERTY PLAYERKIT_DRIVER_TESTS drivers_${ARG_NAME}_test)
       playerkit_add_test(NAME drivers_${ARG_NAME}_test SOURCES ${tests}
-                         LIBS playerkit_drivers playerkit_test_support)
+                         LIBS playerkit_drivers playerkit_test_support ${ARG_TEST_LIBS})
     endif()
   endif()
 endfunction()

@@ -37,6 +37,24 @@ struct DriverContext {
 
 using DriverFactory = std::function<std::unique_ptr<Driver>(const DriverContext&)>;
 
+// What `player-drivers info` shows about a driver: enough to write its
+// configuration section without the manual.
+struct OptionDoc {
+  std::string name;           // "rate"; legacy aliases after a slash: "laser_max_beams/laser_max_samples"
+  std::string type;           // "int", "float", "length", "angle", "string", "filename", "tuple"
+  std::string default_value;  // as it would be written in a .cfg
+  std::string unit;           // "baud", "m", "deg", "mm/s"; empty when none
+  std::string summary;        // one line; allowed values where they are few
+};
+
+struct DriverDoc {
+  std::string manual_section;  // "7.39" (Player 1.5 manual)
+  bool needs_hardware = false;  // opens a port, a device file or a remote server
+  std::vector<OptionDoc> options;
+  std::vector<std::string> requests;  // "GET_GEOM: the laser's pose and size", ...
+  std::string example;                // a config section to paste
+};
+
 struct DriverSpec {
   std::string name;                     // as written after `driver` in a config file
   std::vector<std::uint16_t> interfaces;  // interface codes it can serve
@@ -49,6 +67,7 @@ struct DriverSpec {
   std::map<std::uint16_t, DeviceLimits> interface_limits{};
   // The built-in family it comes from ("p2os", "logfile"); empty for plugins.
   std::string family{};
+  DriverDoc doc{};
 
   // `limits`, unless interface_limits says otherwise for this interface.
   [[nodiscard]] DeviceLimits limits_for(std::uint16_t interface) const;
