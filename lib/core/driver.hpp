@@ -18,10 +18,15 @@
 
 #include <chrono>
 #include <condition_variable>
+#include <cstdint>
+#include <functional>
 #include <mutex>
+#include <span>
 #include <stdexcept>
 #include <stop_token>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "core/exchange.hpp"
 
@@ -35,6 +40,17 @@ class DriverError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// One named figure a driver keeps about its hardware link ("bytes_in",
+// "checksum_errors", ...), for `player-drivers run --stats`.
+struct DriverCounter {
+  std::string name;
+  std::uint64_t value = 0;
+};
+
+// Sees every byte a driver's link moves: `outgoing` is host -> device.
+using ByteTrace = std::function<void(bool outgoing, std::span<const std::uint8_t> bytes,
+                                     std::chrono::steady_clock::time_point when)>;
 
 class Driver {
  public:
@@ -53,6 +69,14 @@ class Driver {
   virtual RequestResult handle_request(const Request& request);
   // True for drivers that answer requests from their own thread.
   [[nodiscard]] virtual bool runs_own_thread() const { return false; }
+
+  // Hardware drivers: their link's counters (bytes, telegrams, checksum
+  // errors, resyncs, timeouts, reconnects); empty for the others.
+  [[nodiscard]] virtual std::vector<DriverCounter> counters() const { return {}; }
+  // Hardware drivers: report every byte of the link to `trace` (an empty
+  // function stops it); false when the driver has no link. May be called
+  // before setup() and from another thread.
+  virtual bool set_byte_trace(ByteTrace /*trace*/) { return false; }
 
  protected:
   // The device this driver serves; valid from construction of the Device on.
