@@ -5,7 +5,7 @@
 #include <numbers>
 
 namespace playerkit::emulators::p2os {
-namespace {
+namespace differential_drive_test {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -83,5 +83,5 @@ TEST(DifferentialDrive, ContactIsReportedOnceAndClearedOnTaking) {
   EXPECT_EQ(drive.wheels(), (WheelVelocities{0.0, 0.0}));
 }
 
-}  // namespace
+}  // namespace differential_drive_test
 }  // namespace playerkit::emulators::p2os

@@ -7,7 +7,7 @@
 #include <numbers>
 
 namespace playerkit::emulators {
-namespace {
+namespace drive_session_test {
 
 using namespace testing;
 namespace command = hw::command;
@@ -265,5 +265,5 @@ TEST(P2osDriveSession, TenSipsASecondWhateverTheTraffic) {
   EXPECT_EQ(s.host.take_sips().size(), 20u);
 }
 
-}  // namespace
+}  // namespace drive_session_test
 }  // namespace playerkit::emulators

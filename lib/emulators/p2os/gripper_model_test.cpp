@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::emulators::p2os {
-namespace {
+namespace gripper_model_test {
 
 namespace state = hardware::p2os::gripper_state;
 namespace cmd = hardware::p2os::gripper_command;
@@ -42,5 +42,5 @@ TEST(GripperModel, HaltStopsBothAndUnknownCommandsAreIgnored) {
   EXPECT_EQ(gripper.state_bits(), 0);
 }
 
-}  // namespace
+}  // namespace gripper_model_test
 }  // namespace playerkit::emulators::p2os

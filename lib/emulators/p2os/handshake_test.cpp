@@ -3,7 +3,7 @@
 #include "emulators/p2os/test_support.hpp"
 
 namespace playerkit::emulators {
-namespace {
+namespace handshake_test {
 
 using namespace testing;
 namespace command = hw::command;
@@ -184,5 +184,5 @@ TEST(P2osHandshake, DescribeSaysWhereTheLinkStands) {
   EXPECT_EQ(robot.protocol_name(), "p2os");
 }
 
-}  // namespace
+}  // namespace handshake_test
 }  // namespace playerkit::emulators

@@ -4,7 +4,7 @@
 #include "emulators/p2os/test_support.hpp"
 
 namespace playerkit::emulators {
-namespace {
+namespace link_test {
 
 using namespace testing;
 namespace command = hw::command;
@@ -219,5 +219,5 @@ TEST(P2osLink, BadOptionsAreRefusedWithAReason) {
   EXPECT_NE(refused(options).find("255"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace link_test
 }  // namespace playerkit::emulators

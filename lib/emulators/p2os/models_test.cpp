@@ -6,7 +6,7 @@
 #include <numbers>
 
 namespace playerkit::emulators {
-namespace {
+namespace models_test {
 
 using namespace testing;
 namespace command = hw::command;
@@ -80,5 +80,5 @@ TEST(P2osModels, RowsWithoutSheetPosesGetAnEvenRing) {
   EXPECT_EQ(poses[0].y, 440);  // 80 % of the 550 mm radius
 }
 
-}  // namespace
+}  // namespace models_test
 }  // namespace playerkit::emulators

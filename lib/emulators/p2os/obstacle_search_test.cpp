@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::emulators::p2os {
-namespace {
+namespace obstacle_search_test {
 
 TEST(NearestObstacle, DistanceToTheCellsNearestPoint) {
   grid::OccupancyGrid map(10, 10, 0.1, {0.0, 0.0}, grid::CellState::free);
@@ -20,5 +20,5 @@ TEST(NearestObstacle, DistanceToTheCellsNearestPoint) {
   EXPECT_FALSE(nearest_obstacle(grid::OccupancyGrid{}, {0.0, 0.0}, 1.0).has_value());
 }
 
-}  // namespace
+}  // namespace obstacle_search_test
 }  // namespace playerkit::emulators::p2os

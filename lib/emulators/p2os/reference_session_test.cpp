@@ -9,7 +9,7 @@
 #include <numbers>
 
 namespace playerkit::emulators {
-namespace {
+namespace reference_session_test {
 
 using namespace testing;
 namespace command = hw::command;
@@ -180,5 +180,5 @@ TEST(P2osReferenceSession, ShutdownStopsTheRobotAndTheNextStartUpWorks) {
   EXPECT_TRUE(robot.connected());
 }
 
-}  // namespace
+}  // namespace reference_session_test
 }  // namespace playerkit::emulators

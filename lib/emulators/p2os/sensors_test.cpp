@@ -11,7 +11,7 @@
 #include <numbers>
 
 namespace playerkit::emulators {
-namespace {
+namespace sensors_test {
 
 using namespace testing;
 namespace command = hw::command;
@@ -187,5 +187,5 @@ TEST(P2osSensors, SoundJoydriveAndPulseAreAcceptedAndIgnored) {
   EXPECT_EQ(host.take_sips().size(), 1u);
 }
 
-}  // namespace
+}  // namespace sensors_test
 }  // namespace playerkit::emulators

@@ -6,7 +6,7 @@
 #include <numbers>
 
 namespace playerkit::emulators::p2os {
-namespace {
+namespace sip_units_test {
 
 const hardware::p2os::RobotParams& row(std::string_view subclass) {
   return *hardware::p2os::find_robot_params("Pioneer", subclass);
@@ -39,5 +39,5 @@ TEST(SipUnits, VelocityAndRangeSaturate) {
   EXPECT_EQ(range_units(1e6, row("p2dx")), 65535);
 }
 
-}  // namespace
+}  // namespace sip_units_test
 }  // namespace playerkit::emulators::p2os

@@ -6,7 +6,7 @@
 #include <numbers>
 
 namespace playerkit::emulators {
-namespace {
+namespace world_test {
 
 using namespace testing;
 namespace command = hw::command;
@@ -229,5 +229,5 @@ TEST(P2osWorld, SonarsCanCycleAFewPerSip) {
   EXPECT_EQ(order, expected);
 }
 
-}  // namespace
+}  // namespace world_test
 }  // namespace playerkit::emulators

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::hardware::p2os {
-namespace {
+namespace aux_serial_test {
 
 using testing::hex;
 
@@ -76,5 +76,5 @@ TEST(FindCmucamMessage, SearchesOnlyTheReferencesWindow) {
   EXPECT_EQ(find_cmucam_message(hex("FF 41 00 00 00 00 00 00 00 00")), std::nullopt);
 }
 
-}  // namespace
+}  // namespace aux_serial_test
 }  // namespace playerkit::hardware::p2os

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::hardware::p2os {
-namespace {
+namespace commands_test {
 
 using testing::hex;
 namespace golden = testing::golden;
@@ -126,5 +126,5 @@ TEST(CommandName, DependsOnTheConnectionForReusedNumbers) {
   EXPECT_EQ(command_name(200, true), "command 200");
 }
 
-}  // namespace
+}  // namespace commands_test
 }  // namespace playerkit::hardware::p2os

@@ -7,7 +7,7 @@
 #include <vector>
 
 namespace playerkit::hardware::p2os {
-namespace {
+namespace frame_format_test {
 
 using testing::hex;
 namespace golden = testing::golden;
@@ -129,5 +129,5 @@ TEST(P2osFrameFormat, ResynchronisesThroughNoiseAndCorruptFrames) {
   EXPECT_EQ(result.left_over, 0u);
 }
 
-}  // namespace
+}  // namespace frame_format_test
 }  // namespace playerkit::hardware::p2os

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::hardware::p2os {
-namespace {
+namespace frame_test {
 
 using testing::hex;
 namespace golden = testing::golden;
@@ -65,5 +65,5 @@ TEST(FramePayload, RejectsMalformedFramesWithAReason) {
   }
 }
 
-}  // namespace
+}  // namespace frame_test
 }  // namespace playerkit::hardware::p2os

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::hardware::p2os {
-namespace {
+namespace gyro_packet_test {
 
 using testing::hex;
 
@@ -39,5 +39,5 @@ TEST(GyroPacket, RefusesMoreReadingsThanAFrameHolds) {
   EXPECT_THROW(encode_gyro_packet(packet), EncodeError);
 }
 
-}  // namespace
+}  // namespace gyro_packet_test
 }  // namespace playerkit::hardware::p2os

@@ -6,7 +6,7 @@
 #include <string>
 
 namespace playerkit::hardware::p2os {
-namespace {
+namespace robot_params_test {
 
 TEST(RobotParams, TwentyThreeRowsInTheReferencesOrder) {
   const auto table = robot_params_table();
@@ -171,5 +171,5 @@ TEST(RobotParams, RemainingFieldsWhereTheSheetGivesThem) {
   EXPECT_EQ(p3at.trans_vel_max, 0);
 }
 
-}  // namespace
+}  // namespace robot_params_test
 }  // namespace playerkit::hardware::p2os

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::hardware::p2os {
-namespace {
+namespace sip_test {
 
 using testing::hex;
 namespace golden = testing::golden;
@@ -132,5 +132,5 @@ TEST(Compass, ByteForAHeadingNeverUsesAnIgnoredValue) {
   }
 }
 
-}  // namespace
+}  // namespace sip_test
 }  // namespace playerkit::hardware::p2os

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::hardware::p2os {
-namespace {
+namespace sync_test {
 
 using testing::hex;
 namespace golden = testing::golden;
@@ -51,5 +51,5 @@ TEST(Sync2Reply, RejectsOtherTypes) {
   EXPECT_THROW(decode_sync2_reply(hex("01 41 00 42 00 43 00")), DecodeError);
 }
 
-}  // namespace
+}  // namespace sync_test
 }  // namespace playerkit::hardware::p2os
