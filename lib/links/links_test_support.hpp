@@ -1,0 +1,67 @@
+#pragma once
+// Shared by the links tests: temporary directories and bounded reads.
+
+#include <gtest/gtest.h>
+#include <stdlib.h>
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "links/byte_link.hpp"
+#include "links/pseudo_terminal.hpp"
+
+namespace playerkit::links::testing {
+
+using namespace std::chrono_literals;
+using Bytes = std::vector<std::uint8_t>;
+
+// Generous: only reached when something is broken.
+inline constexpr auto kPatience = 5s;
+
+class TemporaryDirectory {
+ public:
+  TemporaryDirectory() {
+    std::string pattern = (std::filesystem::temp_directory_path() / "links_test.XXXXXX").string();
+    if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
+    path_ = pattern;
+  }
+  TemporaryDirectory(const TemporaryDirectory&) = delete;
+  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
+  ~TemporaryDirectory() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// Reads until `count` bytes arrived or kPatience passed.
+inline Bytes read_exactly(ByteLink& link, std::size_t count) {
+  Bytes received;
+  const Deadline deadline = deadline_in(kPatience);
+  std::vector<std::uint8_t> chunk(count);
+  while (received.size() < count) {
+    const std::size_t got = link.read_some(std::span(chunk).first(count - received.size()), deadline);
+    if (got == 0) break;
+    received.insert(received.end(), chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(got));
+  }
+  return received;
+}
+
+inline Bytes read_exactly(PseudoTerminal& pty, std::size_t count) {
+  Bytes received;
+  const Deadline deadline = deadline_in(kPatience);
+  std::vector<std::uint8_t> chunk(count);
+  while (received.size() < count && LinkClock::now() < deadline) {
+    const auto got = pty.read_some(std::span(chunk).first(count - received.size()), deadline);
+    received.insert(received.end(), chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(got.count));
+  }
+  return received;
+}
+
+}  // namespace playerkit::links::testing
