@@ -7,7 +7,7 @@
 #include <numbers>
 
 namespace playerkit::emulators {
-namespace {
+namespace sick_laser_scene_test {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -61,5 +61,5 @@ TEST(SickLaserScene, WithoutAMapEveryBeamReadsTheConstant) {
   EXPECT_FALSE(nothing.measure({0, 0}, 1.0, 8.0).returned);
 }
 
-}  // namespace
+}  // namespace sick_laser_scene_test
 }  // namespace playerkit::emulators

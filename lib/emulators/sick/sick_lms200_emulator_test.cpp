@@ -14,7 +14,7 @@
 #include <numbers>
 
 namespace playerkit::emulators {
-namespace {
+namespace sick_lms200_emulator_test {
 
 using namespace std::chrono_literals;
 using testing::TestHost;
@@ -307,5 +307,5 @@ TEST(SickLms200Emulator, DescribesItself) {
             "50/100 deg");
 }
 
-}  // namespace
+}  // namespace sick_lms200_emulator_test
 }  // namespace playerkit::emulators

@@ -15,7 +15,7 @@
 #include <numbers>
 
 namespace playerkit::emulators {
-namespace {
+namespace sick_lms200_stream_test {
 
 using namespace std::chrono_literals;
 using testing::Received;
@@ -394,5 +394,5 @@ TEST(SickLms200Stream, KeepsStreamingAndItsStateWhenTheHostGoesAway) {
   EXPECT_EQ(host.ask(sick::InstallationModeRequest{"SICK_LMS"}).code, 0xA0);
 }
 
-}  // namespace
+}  // namespace sick_lms200_stream_test
 }  // namespace playerkit::emulators

@@ -14,7 +14,7 @@
 #include <numbers>
 
 namespace playerkit::emulators {
-namespace {
+namespace sick_pls_emulator_test {
 
 using namespace std::chrono_literals;
 using testing::TestHost;
@@ -142,5 +142,5 @@ TEST(SickPlsEmulator, DescribesItself) {
   EXPECT_EQ(device.describe(), "SICK PLS, 9600 baud, idle, 180 deg at 50/100 deg");
 }
 
-}  // namespace
+}  // namespace sick_pls_emulator_test
 }  // namespace playerkit::emulators

@@ -7,7 +7,7 @@
 #include <span>
 
 namespace playerkit::hardware::sick {
-namespace {
+namespace crc_test {
 
 using testing::bytes;
 
@@ -33,5 +33,5 @@ TEST(SickCrc, DependsOnByteOrder) {
   EXPECT_NE(crc16(bytes("02 00 01 00 3A")), crc16(bytes("02 00 01 3A 00")));
 }
 
-}  // namespace
+}  // namespace crc_test
 }  // namespace playerkit::hardware::sick

@@ -8,7 +8,7 @@
 #include <vector>
 
 namespace playerkit::hardware::sick {
-namespace {
+namespace frame_format_test {
 
 using testing::bytes;
 using Kind = FrameScan::Kind;
@@ -114,5 +114,5 @@ TEST(SickFrameFormat, ResynchronisesOnANoisyLine) {
   EXPECT_EQ(bad, 1);
 }
 
-}  // namespace
+}  // namespace frame_format_test
 }  // namespace playerkit::hardware::sick

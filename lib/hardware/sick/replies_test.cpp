@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::hardware::sick {
-namespace {
+namespace replies_test {
 
 using testing::bytes;
 
@@ -104,5 +104,5 @@ TEST(SickReplies, WrongCodesAndLengthsAreClearErrors) {
                      Reply{0xA0, {0}, 0x10}, "got reply code A0");
 }
 
-}  // namespace
+}  // namespace replies_test
 }  // namespace playerkit::hardware::sick

@@ -8,7 +8,7 @@
 #include <numbers>
 
 namespace playerkit::hardware::sick {
-namespace {
+namespace requests_test {
 
 using testing::bytes;
 
@@ -142,5 +142,5 @@ TEST(SickVariant, AnglesRunCounterClockwiseFromTheRight) {
   EXPECT_NEAR(variant.first_angle_rad() + 400 * variant.step_rad(), 50.0 * std::numbers::pi / 180.0, 1e-12);
 }
 
-}  // namespace
+}  // namespace requests_test
 }  // namespace playerkit::hardware::sick

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::hardware::sick {
-namespace {
+namespace scan_test {
 
 using testing::bytes;
 
@@ -102,5 +102,5 @@ TEST(SickScan, RefusesWhatIsNotAWholeScan) {
   EXPECT_THROW(encode_scan(too_many), TelegramError);
 }
 
-}  // namespace
+}  // namespace scan_test
 }  // namespace playerkit::hardware::sick

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace playerkit::hardware::sick {
-namespace {
+namespace telegram_test {
 
 using testing::bytes;
 
@@ -92,5 +92,5 @@ TEST(SickTelegram, HexShortensLongInput) {
   EXPECT_EQ(hex(std::vector<std::uint8_t>(20, 0xAB), 2), "AB AB ... (20 bytes)");
 }
 
-}  // namespace
+}  // namespace telegram_test
 }  // namespace playerkit::hardware::sick

@@ -1,0 +1,124 @@
+#include "daemon/daemon.hpp"
+
+#include <algorithm>
+#include <exception>
+
+#include "config/config_file.hpp"
+#include "config/errors.hpp"
+#include "core/instantiate.hpp"
+#include "core/plugin.hpp"
+#include "drivers/logfile/readlog_driver.hpp"
+#include "server/server.hpp"
+
+namespace playerkit::daemon {
+
+namespace {
+
+constexpr int kFailure = 1;
+constexpr int kBadConfig = 2;
+
+}  // namespace
+
+Daemon::Daemon(ServeOptions options) : options_(std::move(options)), logger_(options_.program_name) {
+  logger_.set_level(options_.log_level);
+  try {
+    registry_ = load_drivers(options_.plugins, logger_);
+  } catch (const core::PluginError& e) {
+    logger_.error(e.what());
+    throw DaemonError(kFailure, e.what());
+  }
+  if (options_.readlog) {
+    // Replaces a plugin's readlog too: -r names what the built-in one replays.
+    registry_.add(drivers::readlog_driver_spec({.log = *options_.readlog,
+                                                .speed = options_.readlog_speed,
+                                                .clock = &log_clock_,
+                                                .timer = nullptr,
+                                                .data_queue = options_.readlog_data_queue,
+                                                .duration = options_.readlog_duration,
+                                                .burst = options_.readlog_burst}));
+  }
+  // With -r every header time the server writes is log time: the readlog
+  // reader of that file sets log_clock as it replays (logfile-format.md §5).
+  const core::Clock& clock = options_.readlog ? static_cast<const core::Clock&>(log_clock_)
+                                              : static_cast<const core::Clock&>(wall_clock_);
+  server::ServerOptions server_options;
+  server_options.bind_address = options_.bind_address;
+  server_options.auth_key = options_.auth_key;
+  server_ = std::make_unique<server::Server>(devices_, clock, logger_, server_options);
+}
+
+Daemon::~Daemon() {
+  if (server_) server_->stop();
+  devices_.shutdown_all();
+}
+
+void Daemon::load() {
+  const core::Clock& clock = options_.readlog ? static_cast<const core::Clock&>(log_clock_)
+                                              : static_cast<const core::Clock&>(wall_clock_);
+  const auto fail = [this](int status, const std::string& message) {
+    logger_.error(message);
+    throw DaemonError(status, message);
+  };
+  try {
+    // With -p 0 the port is only known once bound, and devices outside robot
+    // sections are keyed by it: bind first, then read the configuration.
+    default_port_ = options_.port;
+    std::vector<std::uint16_t> bound;
+    if (options_.port == 0) {
+      default_port_ = server_->listen(0);
+      bound.push_back(default_port_);
+    }
+    const auto load_options = core::load_options_for(registry_, default_port_);
+    const auto config = options_.config_text
+                            ? config::ConfigFile::parse(*options_.config_text, options_.config_path, load_options)
+                            : config::ConfigFile::load(options_.config_path, load_options);
+    for (const auto& warning : config.warnings()) logger_.warning(warning.to_string());
+    core::instantiate_devices(config, registry_, devices_, clock, logger_);
+    for (const auto& warning : config.unused_properties()) logger_.warning(warning.to_string());
+    const auto served = devices_.all();
+    if (options_.readlog && std::none_of(served.begin(), served.end(), [](const core::Device* device) {
+          return device->info().driver_name == "readlog";
+        })) {
+      logger_.warning("-r " + *options_.readlog + ": no device of " + options_.config_path +
+                      " has driver \"readlog\"; nothing is replayed");
+    }
+    if (devices_.empty()) fail(kBadConfig, options_.config_path + ": no devices declared, nothing to serve");
+    for (std::uint16_t port : config.ports()) {
+      if (port == 0) {
+        fail(kBadConfig, options_.config_path + ": a robot section with port 0; only -p 0 picks a free port");
+      }
+      if (std::find(bound.begin(), bound.end(), port) == bound.end()) {
+        server_->listen(port);
+        bound.push_back(port);
+      }
+    }
+  } catch (const config::ConfigError& e) {
+    fail(kBadConfig, e.what());
+  } catch (const server::ServerError& e) {
+    fail(kFailure, e.what());
+  }
+}
+
+void Daemon::start() {
+  try {
+    devices_.prepare_all();
+    devices_.start_alwayson();
+  } catch (const std::exception& e) {
+    logger_.error(e.what());
+    devices_.shutdown_all();
+    throw DaemonError(kFailure, e.what());
+  }
+}
+
+void Daemon::run() {
+  logger_.info("serving " + std::to_string(devices_.size()) + " devices");
+  server_->run();
+  devices_.shutdown_all();
+  logger_.info("all devices shut down");
+}
+
+void Daemon::stop() { server_->stop(); }
+
+void Daemon::stop_on_signals() { server_->stop_on_signals(); }
+
+}  // namespace playerkit::daemon

@@ -1,0 +1,78 @@
+#pragma once
+// Serving in steps, for programs that need the devices in their hands while
+// they are served (player-drivers run reads a driver's link counters and
+// traces its bytes); serve() is these steps run until a signal.
+//
+//   daemon::Daemon daemon(options);      // drivers loaded, server made
+//   daemon.load();                       // configuration -> devices, ports bound
+//   daemon.start();                      // prepare, alwayson devices up
+//   std::jthread serving([&] { daemon.run(); });
+//   ... daemon.devices() ..., daemon.stop();
+
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include "core/clock.hpp"
+#include "core/device_table.hpp"
+#include "core/driver_registry.hpp"
+#include "core/logger.hpp"
+#include "daemon/serve.hpp"
+
+namespace playerkit::server {
+class Server;
+}
+
+namespace playerkit::daemon {
+
+// A step failed; exit_status() is what serve() returns for it (1: serving
+// failed; 2: the configuration is wrong). The message is logged already.
+class DaemonError : public std::runtime_error {
+ public:
+  DaemonError(int exit_status, const std::string& message)
+      : std::runtime_error(message), exit_status_(exit_status) {}
+  [[nodiscard]] int exit_status() const { return exit_status_; }
+
+ private:
+  int exit_status_;
+};
+
+class Daemon {
+ public:
+  // Loads the drivers (built-in, plugins, -r's readlog). Throws DaemonError.
+  explicit Daemon(ServeOptions options);
+  ~Daemon();
+  Daemon(const Daemon&) = delete;
+  Daemon& operator=(const Daemon&) = delete;
+
+  // Reads the configuration, creates the devices and binds every port.
+  // Throws DaemonError.
+  void load();
+  // prepare() on every device, then the alwayson ones. Throws DaemonError
+  // (the devices are shut down again).
+  void start();
+  // Serves until stop() (or a signal, after stop_on_signals()), then shuts
+  // every device down.
+  void run();
+  void stop();
+  void stop_on_signals();
+
+  // The port devices outside robot sections are served on (chosen when -p 0).
+  [[nodiscard]] std::uint16_t default_port() const { return default_port_; }
+  [[nodiscard]] core::DeviceTable& devices() { return devices_; }
+  [[nodiscard]] const core::DriverRegistry& registry() const { return registry_; }
+  [[nodiscard]] core::Logger& logger() { return logger_; }
+
+ private:
+  ServeOptions options_;
+  core::Logger logger_;
+  core::WallClock wall_clock_;
+  core::ManualClock log_clock_;
+  core::DriverRegistry registry_;
+  core::DeviceTable devices_;
+  std::unique_ptr<server::Server> server_;
+  std::uint16_t default_port_ = 0;
+};
+
+}  // namespace playerkit::daemon
