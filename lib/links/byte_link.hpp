@@ -38,7 +38,8 @@ class ByteLink {
   virtual ~ByteLink() = default;
 
   // Waits until at least one byte is available or the deadline passes; reads
-  // what is there, up to buffer.size(). Returns the count, 0 on timeout only.
+  // what is there, up to buffer.size(). Returns the count, 0 on timeout only
+  // (an empty buffer reads nothing and returns 0 at once).
   // Throws LinkError: disconnected (device unplugged, peer gone), closed, io_error.
   std::size_t read_some(std::span<std::uint8_t> buffer, Deadline deadline);
 

@@ -3,15 +3,14 @@
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
 
-#include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <optional>
-#include <cstdio>
-#include <string_view>
 #include <sstream>
+#include <string_view>
 
 namespace playerkit::links {
 

@@ -90,6 +90,13 @@ TEST(SerialLink, RegularFileIsNotATerminal) {
   EXPECT_TRUE(contains(error.what(), file.string() + " is not a serial port")) << error.what();
 }
 
+TEST(SerialLink, DirectoryIsNotATerminal) {
+  TemporaryDirectory directory;
+  const LinkError error = open_error(directory.path().string());
+  EXPECT_EQ(error.kind(), LinkErrorKind::not_a_terminal);
+  EXPECT_TRUE(contains(error.what(), "is a directory, not a serial port")) << error.what();
+}
+
 TEST(SerialLink, CharacterDeviceThatIsNoTerminal) {
   const LinkError error = open_error("/dev/null");
   EXPECT_EQ(error.kind(), LinkErrorKind::not_a_terminal);

@@ -1,5 +1,6 @@
 #include "links/tcp_link.hpp"
 
+#include <fcntl.h>
 #include <netdb.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
@@ -73,6 +74,11 @@ std::unique_ptr<TcpLink> TcpLink::connect(const std::string& host, std::uint16_t
 
 std::unique_ptr<TcpLink> TcpLink::adopt(UniqueFd socket, std::string description) {
   std::unique_ptr<TcpLink> link(new TcpLink("", 0, std::move(description)));
+  // Every wait is a poll with a deadline; a blocking socket would defeat it.
+  const int flags = ::fcntl(socket.get(), F_GETFL);
+  if (flags < 0 || ::fcntl(socket.get(), F_SETFL, flags | O_NONBLOCK) != 0) {
+    throw system_error(link->description_, "cannot make the socket non-blocking", errno);
+  }
   set_socket_options(socket.get());
   link->fd_ = std::move(socket);
   return link;

@@ -5,6 +5,9 @@
 #include <poll.h>
 #include <sys/socket.h>
 
+#include <atomic>
+#include <thread>
+
 #include "links/link_error.hpp"
 #include "links/links_test_support.hpp"
 #include "links/tcp_listener.hpp"
@@ -50,6 +53,29 @@ TEST(TcpLink, RoundTripBothWays) {
   EXPECT_EQ(read_exactly(*pair.driver, reply.size()), reply);
   EXPECT_EQ(pair.driver->counters().snapshot().bytes_out, command.size());
   EXPECT_EQ(pair.driver->counters().snapshot().bytes_in, reply.size());
+}
+
+TEST(TcpLink, OneThreadReadsWhileAnotherWritesAndTraces) {
+  Connected pair;
+  constexpr std::size_t kTotal = 64 * 1024;
+  std::atomic<std::size_t> traced_in{0};
+  Bytes echoed;
+  std::thread reader([&] { echoed = read_exactly(*pair.driver, kTotal); });
+  const Bytes chunk(1024, 0x5A);
+  for (std::size_t sent = 0; sent < kTotal; sent += chunk.size()) {
+    if (sent == kTotal / 2) {
+      pair.driver->set_trace_hook([&](Direction direction, std::span<const std::uint8_t> bytes, LinkClock::time_point) {
+        if (direction == Direction::in) traced_in += bytes.size();
+      });
+    }
+    pair.device->write_all(chunk, deadline_in(kPatience));
+    pair.driver->write_all(std::span(chunk).first(1), deadline_in(kPatience));
+  }
+  reader.join();
+  EXPECT_EQ(echoed.size(), kTotal);
+  EXPECT_LE(traced_in.load(), kTotal);
+  EXPECT_EQ(pair.driver->counters().snapshot().bytes_in, kTotal);
+  EXPECT_EQ(pair.driver->counters().snapshot().bytes_out, kTotal / chunk.size());
 }
 
 TEST(TcpLink, HasNoLineSpeed) {
@@ -188,6 +214,22 @@ TEST(TcpLink, Ipv6Loopback) {
   const Bytes hello = {0x06};
   device->write_all(hello, deadline_in(kPatience));
   EXPECT_EQ(read_exactly(*driver, 1), hello);
+}
+
+TEST(TcpLink, AdoptedBlockingSocketStillHonoursDeadlines) {
+  TcpListener listener("127.0.0.1", 0);
+  UniqueFd client(::socket(AF_INET, SOCK_STREAM, 0));  // blocking
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  address.sin_port = htons(listener.port());
+  ASSERT_EQ(::connect(client.get(), reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+  auto link = TcpLink::adopt(std::move(client), "client");
+  auto device = listener.accept(deadline_in(kPatience));
+  ASSERT_NE(device, nullptr);
+  std::uint8_t buffer[1];
+  EXPECT_EQ(link->read_some(buffer, deadline_in(10ms)), 0u);  // would hang if still blocking
+  EXPECT_EQ(link->describe(), "client");
 }
 
 TEST(TcpListener, AcceptTimesOut) {
