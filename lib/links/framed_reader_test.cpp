@@ -9,9 +9,9 @@
 #include "links/serial_link.hpp"
 
 namespace playerkit::links {
-namespace {
+namespace framed_reader_test {
 
-using namespace testing;
+using namespace test_support;
 
 // A toy protocol for the reader: AA, N, N payload bytes, XOR of the payload.
 // `trusted_length` is the longest N it believes; the lax variant believes
@@ -234,5 +234,5 @@ TEST(FramedReader, NoiseBadChecksumsAndSplitsOverARealPty) {
   EXPECT_EQ(counters.bytes_dropped, 3u + 4u);
 }
 
-}  // namespace
+}  // namespace framed_reader_test
 }  // namespace playerkit::links

@@ -5,7 +5,7 @@
 #include "links/link_error.hpp"
 
 namespace playerkit::links {
-namespace {
+namespace link_address_test {
 
 std::string rejection(std::string_view text) {
   try {
@@ -66,5 +66,5 @@ TEST(LinkAddress, ErrorsNameTheValueAndTheExpectedForms) {
   EXPECT_NE(message.find("tcp:HOST:PORT"), std::string::npos) << message;
 }
 
-}  // namespace
+}  // namespace link_address_test
 }  // namespace playerkit::links

@@ -13,7 +13,7 @@
 #include "links/byte_link.hpp"
 #include "links/pseudo_terminal.hpp"
 
-namespace playerkit::links::testing {
+namespace playerkit::links::test_support {
 
 using namespace std::chrono_literals;
 using Bytes = std::vector<std::uint8_t>;
@@ -64,4 +64,4 @@ inline Bytes read_exactly(PseudoTerminal& pty, std::size_t count) {
   return received;
 }
 
-}  // namespace playerkit::links::testing
+}  // namespace playerkit::links::test_support

@@ -9,9 +9,9 @@
 #include "links/tcp_listener.hpp"
 
 namespace playerkit::links {
-namespace {
+namespace open_link_test {
 
-using namespace testing;
+using namespace test_support;
 
 TEST(OpenLink, TtyPathGivesASerialLink) {
   PseudoTerminal pty;
@@ -54,5 +54,5 @@ TEST(OpenLink, MissingTtyIsMissing) {
   }
 }
 
-}  // namespace
+}  // namespace open_link_test
 }  // namespace playerkit::links

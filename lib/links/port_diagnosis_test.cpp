@@ -10,9 +10,9 @@
 #include "links/serial_link.hpp"
 
 namespace playerkit::links {
-namespace {
+namespace port_diagnosis_test {
 
-using namespace testing;
+using namespace test_support;
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
@@ -164,5 +164,5 @@ TEST(PortDiagnosis, HoldersText) {
             "pid 12 (player, holds the lock), pid 99 (minicom), pid 7");
 }
 
-}  // namespace
+}  // namespace port_diagnosis_test
 }  // namespace playerkit::links

@@ -12,9 +12,9 @@
 #include "links/serial_link.hpp"
 
 namespace playerkit::links {
-namespace {
+namespace pseudo_terminal_test {
 
-using namespace testing;
+using namespace test_support;
 
 // Waits (bounded) for the host to open or close; true when it happened.
 bool await_host(PseudoTerminal& pty, bool connected) {
@@ -181,5 +181,5 @@ TEST(PseudoTerminal, StopBitsAndFlowControlAreVisibleOnTheMaster) {
   EXPECT_EQ(reb->describe(), pty.path() + " at 4800 7O2 rtscts");
 }
 
-}  // namespace
+}  // namespace pseudo_terminal_test
 }  // namespace playerkit::links

@@ -13,9 +13,9 @@
 #include "links/link_error.hpp"
 
 namespace playerkit::links {
-namespace {
+namespace serial_link_test {
 
-using namespace testing;
+using namespace test_support;
 
 LinkError open_error(const std::string& path, const SerialSettings& settings = {}) {
   try {
@@ -237,5 +237,5 @@ TEST(SerialLink, RefusedSpeedKeepsTheOldOne) {
   EXPECT_EQ(pty.slave_baud(), 9600);
 }
 
-}  // namespace
+}  // namespace serial_link_test
 }  // namespace playerkit::links

@@ -5,7 +5,7 @@
 #include "links/link_error.hpp"
 
 namespace playerkit::links {
-namespace {
+namespace serial_settings_test {
 
 TEST(SerialSettings, DefaultsAre9600RawEightNoneOneExclusive) {
   const SerialSettings settings;
@@ -59,5 +59,5 @@ TEST(SerialSettings, StandardBauds) {
   EXPECT_EQ(to_string(SerialSettings{.baud = 115200, .flow_control = FlowControl::hardware}), "115200 8N1 rtscts");
 }
 
-}  // namespace
+}  // namespace serial_settings_test
 }  // namespace playerkit::links

@@ -13,9 +13,9 @@
 #include "links/tcp_listener.hpp"
 
 namespace playerkit::links {
-namespace {
+namespace tcp_link_test {
 
-using namespace testing;
+using namespace test_support;
 
 struct Connected {
   TcpListener listener{"127.0.0.1", 0};
@@ -238,5 +238,5 @@ TEST(TcpListener, AcceptTimesOut) {
   EXPECT_THROW(TcpListener("not-an-address", 0), LinkError);
 }
 
-}  // namespace
+}  // namespace tcp_link_test
 }  // namespace playerkit::links

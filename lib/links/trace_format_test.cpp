@@ -5,7 +5,7 @@
 #include "links/link_counters.hpp"
 
 namespace playerkit::links {
-namespace {
+namespace trace_format_test {
 
 TEST(TraceFormat, HexBytesUpperCaseSpaced) {
   const std::uint8_t bytes[] = {0x02, 0x80, 0x03, 0x00, 0xA0, 0x00, 0x10, 0x16, 0x0A};
@@ -47,5 +47,5 @@ TEST(LinkCounters, SnapshotDifferenceAndText) {
             "in 20 B, out 0 B, 1 telegram, 1 checksum error, 2 resyncs (7 B dropped), 0 timeouts, 0 reconnects");
 }
 
-}  // namespace
+}  // namespace trace_format_test
 }  // namespace playerkit::links
