@@ -9,7 +9,7 @@
 #include <variant>
 #include <vector>
 
-#include "localization/line_tokens.hpp"
+#include "log/text_log_tokens.hpp"
 #include "localization/odometry_perturbation.hpp"
 #include "log/carmen_log_parser.hpp"
 #include "log/carmen_log_reader.hpp"
@@ -20,6 +20,11 @@
 
 namespace playerkit::localization {
 namespace {
+
+using log::format_text;
+using log::LineToken;
+using log::replace_tokens;
+using log::split_line_tokens;
 
 double path_step(const std::optional<geometry::Pose2>& from, const geometry::Pose2& to) {
   return from ? std::hypot(to.x - from->x, to.y - from->y) : 0.0;
@@ -164,7 +169,7 @@ bool player_log_has_truth(const std::filesystem::path& path) {
   std::string line;
   while (lines.next(line)) {
     const auto tokens = split_line_tokens(line);
-    if (tokens.size() > 3 && tokens[3].text == "truth") return true;
+    if (tokens.size() > log::kInterfaceColumn && tokens[log::kInterfaceColumn].text == "truth") return true;
   }
   return false;
 }
@@ -172,8 +177,12 @@ bool player_log_has_truth(const std::filesystem::path& path) {
 std::string player_truth_line(const std::vector<LineToken>& position_tokens, const geometry::Pose2& pose,
                               log::LogFormatVersion version, const char* end) {
   std::string line;
-  for (std::size_t i = 0; i < 3; ++i) line.append(position_tokens[i].text).append(" ");
-  line.append("truth ").append(position_tokens[4].text).append(" ").append(position_tokens[5].text).append(" ");
+  for (std::size_t i = 0; i < log::kInterfaceColumn; ++i) line.append(position_tokens[i].text).append(" ");
+  line.append("truth ")
+      .append(position_tokens[log::kIndexColumn].text)
+      .append(" ")
+      .append(position_tokens[log::kDataTimeColumn].text)
+      .append(" ");
   line += player_length(pose.x) + " " + player_length(pose.y) + " ";
   if (version == log::LogFormatVersion::k0_2_0) {
     // 1.6.5's truth is 3-D: z, roll and pitch are written 0, as the writer does.
@@ -205,10 +214,9 @@ PerturbationSummary perturb_player(const std::filesystem::path& path, std::ostre
         if (data->device && !data->message.payload.empty()) {
           if (data->device->interface == protocol::kPositionCode) position_index = data->device->index;
           if (data->device->interface == protocol::kTruthCode && data->device->index == 0) {
-            const auto tokens = split_line_tokens(line);
-            const std::size_t yaw_token = version == log::LogFormatVersion::k0_2_0 ? 11 : 8;
-            const geometry::Pose2 truth{token_number(tokens[6], "x"), token_number(tokens[7], "y"),
-                                        token_number(tokens[yaw_token], "yaw")};
+            const auto pose = log::read_text_pose(log::split_line_tokens(line),
+                                                  version == log::LogFormatVersion::k0_2_0);
+            const geometry::Pose2 truth{pose.x, pose.y, pose.yaw};
             summary.truth_path_m += path_step(last_truth, truth);
             last_truth = truth;
           }
@@ -221,9 +229,9 @@ PerturbationSummary perturb_player(const std::filesystem::path& path, std::ostre
       out << line << lines.end();
       continue;
     }
-    const auto tokens = split_line_tokens(line);
-    const geometry::Pose2 original{token_number(tokens[6], "x"), token_number(tokens[7], "y"),
-                                   geometry::normalize_angle(token_number(tokens[8], "yaw"))};
+    const auto tokens = log::split_line_tokens(line);
+    const auto pose = log::read_text_pose(tokens, false);
+    const geometry::Pose2 original{pose.x, pose.y, geometry::normalize_angle(pose.yaw)};
     auto stream = streams.find(*position_index);
     if (stream == streams.end()) {
       // Each index its own stream; seed_seq keeps the streams of one seed apart.
@@ -236,7 +244,7 @@ PerturbationSummary perturb_player(const std::filesystem::path& path, std::ostre
     }
     const auto degraded = stream->second.next(original);
     const bool truth_follows = add_truth && *position_index == 0;
-    out << replace_tokens(line, tokens, 6,
+    out << replace_tokens(line, tokens, log::kFirstFieldColumn,
                           {player_length(degraded.x), player_length(degraded.y), player_angle(degraded.yaw)})
         << (truth_follows ? "\n" : lines.end());
     ++summary.odometry_poses_changed;

@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "localization/line_tokens.hpp"
+#include "log/text_log_tokens.hpp"
 #include "localization/localization_test_support.hpp"
 #include "localization/logged_scan_reader.hpp"
 #include "log/log_input.hpp"
@@ -19,6 +19,7 @@
 namespace playerkit::localization {
 namespace odometry_perturbation_test {
 
+using log::split_line_tokens;
 using testing::radish;
 using testing::TemporaryDirectory;
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <variant>
 
-#include "localization/line_tokens.hpp"
+#include "log/text_log_tokens.hpp"
 #include "localization/logged_scan_source.hpp"
 #include "log/log_input.hpp"
 #include "log/log_parse_error.hpp"
@@ -22,11 +22,8 @@ constexpr double kRadiansPerHundredthDegree = std::numbers::pi / 18000.0;
 // x y yaw of a position or truth line, from the text: the wire structs hold
 // whole degrees, the text 0.001 rad.
 geometry::Pose2 pose_from_text(const std::string& line, bool truth_0_2_0) {
-  const auto tokens = split_line_tokens(line);
-  const std::size_t yaw_token = truth_0_2_0 ? 11 : 8;  // 0.2.0 truth: x y z roll pitch yaw
-  if (tokens.size() <= yaw_token) throw std::runtime_error("pose line too short");
-  return {token_number(tokens[6], "x"), token_number(tokens[7], "y"),
-          geometry::normalize_angle(token_number(tokens[yaw_token], "yaw"))};
+  const auto pose = log::read_text_pose(log::split_line_tokens(line), truth_0_2_0);
+  return {pose.x, pose.y, geometry::normalize_angle(pose.yaw)};
 }
 
 LoggedScan scan_from_laser(const protocol::Message& message, double time, double max_range) {

@@ -1,4 +1,4 @@
-#include "localization/line_tokens.hpp"
+#include "log/text_log_tokens.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <system_error>
 
-namespace playerkit::localization {
+namespace playerkit::log {
 
 std::vector<LineToken> split_line_tokens(std::string_view line) {
   std::vector<LineToken> tokens;
@@ -52,6 +52,19 @@ std::string replace_tokens(std::string_view line, const std::vector<LineToken>& 
   return result;
 }
 
+PoseColumns pose_columns(bool truth_0_2_0) {
+  PoseColumns columns;
+  if (truth_0_2_0) columns.yaw = kFirstFieldColumn + 5;
+  return columns;
+}
+
+TextPose read_text_pose(const std::vector<LineToken>& tokens, bool truth_0_2_0) {
+  const PoseColumns columns = pose_columns(truth_0_2_0);
+  if (tokens.size() <= columns.yaw) throw std::runtime_error("pose line too short");
+  return {token_number(tokens[columns.x], "x"), token_number(tokens[columns.y], "y"),
+          token_number(tokens[columns.yaw], "yaw")};
+}
+
 std::string format_text(const char* format, double value) {
   char buffer[64];
   const int written = std::snprintf(buffer, sizeof buffer, format, value);
@@ -61,4 +74,4 @@ std::string format_text(const char* format, double value) {
   return std::string(buffer, static_cast<std::size_t>(written));
 }
 
-}  // namespace playerkit::localization
+}  // namespace playerkit::log
