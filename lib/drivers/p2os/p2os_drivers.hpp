@@ -1,0 +1,28 @@
+#pragma once
+// The eleven Player 1.5 `p2os_*` drivers (manual §7.30): one Pioneer
+// (P2OS/AROS/AmigOS controller) on one serial line, served as up to eleven
+// devices. Each device's driver holds a share of one P2osConnection
+// (p2os_connection.hpp): the first device subscribed opens the line and
+// runs the handshake, the last one to leave stops the motors and closes it.
+//
+//   position:0 ( driver "p2os_position" port "/dev/ttyUSB0" )
+//   sonar:0    ( driver "p2os_sonar" )
+//   power:0    ( driver "p2os_power" )
+
+#include "core/driver_registry.hpp"
+
+namespace playerkit::drivers {
+
+core::DriverSpec p2os_position_driver_spec();
+core::DriverSpec p2os_sonar_driver_spec();
+core::DriverSpec p2os_gripper_driver_spec();
+core::DriverSpec p2os_power_driver_spec();
+core::DriverSpec p2os_bumper_driver_spec();
+core::DriverSpec p2os_aio_driver_spec();
+core::DriverSpec p2os_dio_driver_spec();
+core::DriverSpec p2os_cmucam_driver_spec();
+core::DriverSpec p2os_compass_driver_spec();
+core::DriverSpec p2os_gyro_driver_spec();
+core::DriverSpec p2os_sound_driver_spec();
+
+}  // namespace playerkit::drivers
