@@ -12,20 +12,13 @@
 
 namespace playerkit::daemon {
 
-namespace {
-
-constexpr int kFailure = 1;
-constexpr int kBadConfig = 2;
-
-}  // namespace
-
 Daemon::Daemon(ServeOptions options) : options_(std::move(options)), logger_(options_.program_name) {
   logger_.set_level(options_.log_level);
   try {
     registry_ = load_drivers(options_.plugins, logger_);
   } catch (const core::PluginError& e) {
     logger_.error(e.what());
-    throw DaemonError(kFailure, e.what());
+    throw DaemonError(ServeResult::failed, e.what());
   }
   if (options_.readlog) {
     // Replaces a plugin's readlog too: -r names what the built-in one replays.
@@ -55,9 +48,9 @@ Daemon::~Daemon() {
 void Daemon::load() {
   const core::Clock& clock = options_.readlog ? static_cast<const core::Clock&>(log_clock_)
                                               : static_cast<const core::Clock&>(wall_clock_);
-  const auto fail = [this](int status, const std::string& message) {
+  const auto fail = [this](ServeResult result, const std::string& message) {
     logger_.error(message);
-    throw DaemonError(status, message);
+    throw DaemonError(result, message);
   };
   try {
     // With -p 0 the port is only known once bound, and devices outside robot
@@ -82,10 +75,10 @@ void Daemon::load() {
       logger_.warning("-r " + *options_.readlog + ": no device of " + options_.config_path +
                       " has driver \"readlog\"; nothing is replayed");
     }
-    if (devices_.empty()) fail(kBadConfig, options_.config_path + ": no devices declared, nothing to serve");
+    if (devices_.empty()) fail(ServeResult::bad_configuration, options_.config_path + ": no devices declared, nothing to serve");
     for (std::uint16_t port : config.ports()) {
       if (port == 0) {
-        fail(kBadConfig, options_.config_path + ": a robot section with port 0; only -p 0 picks a free port");
+        fail(ServeResult::bad_configuration, options_.config_path + ": a robot section with port 0; only -p 0 picks a free port");
       }
       if (std::find(bound.begin(), bound.end(), port) == bound.end()) {
         server_->listen(port);
@@ -93,9 +86,9 @@ void Daemon::load() {
       }
     }
   } catch (const config::ConfigError& e) {
-    fail(kBadConfig, e.what());
+    fail(ServeResult::bad_configuration, e.what());
   } catch (const server::ServerError& e) {
-    fail(kFailure, e.what());
+    fail(ServeResult::failed, e.what());
   }
 }
 
@@ -106,7 +99,7 @@ void Daemon::start() {
   } catch (const std::exception& e) {
     logger_.error(e.what());
     devices_.shutdown_all();
-    throw DaemonError(kFailure, e.what());
+    throw DaemonError(ServeResult::failed, e.what());
   }
 }
 

@@ -26,16 +26,14 @@ class Server;
 
 namespace playerkit::daemon {
 
-// A step failed; exit_status() is what serve() returns for it (1: serving
-// failed; 2: the configuration is wrong). The message is logged already.
+// A step failed. The message is logged already.
 class DaemonError : public std::runtime_error {
  public:
-  DaemonError(int exit_status, const std::string& message)
-      : std::runtime_error(message), exit_status_(exit_status) {}
-  [[nodiscard]] int exit_status() const { return exit_status_; }
+  DaemonError(ServeResult result, const std::string& message) : std::runtime_error(message), result_(result) {}
+  [[nodiscard]] ServeResult result() const { return result_; }
 
  private:
-  int exit_status_;
+  ServeResult result_;
 };
 
 class Daemon {

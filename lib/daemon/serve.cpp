@@ -17,16 +17,16 @@ core::DriverRegistry load_drivers(const std::vector<std::string>& plugins, core:
   return registry;
 }
 
-int serve(const ServeOptions& options) {
+ServeResult serve(const ServeOptions& options) {
   try {
     Daemon daemon(options);
     daemon.load();
     daemon.start();
     daemon.stop_on_signals();
     daemon.run();
-    return 0;
+    return ServeResult::stopped;
   } catch (const DaemonError& e) {
-    return e.exit_status();  // logged by the daemon
+    return e.result();  // logged by the daemon
   }
 }
 

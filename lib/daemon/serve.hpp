@@ -35,9 +35,13 @@ struct ServeOptions {
 // The built-in drivers plus those of the plugins. Throws core::PluginError.
 core::DriverRegistry load_drivers(const std::vector<std::string>& plugins, core::Logger& logger);
 
-// Returns the exit status: 0 after a clean shutdown on SIGINT/SIGTERM/SIGHUP,
-// 1 when serving fails (port in use, plugin, device set-up), 2 for a bad
-// configuration. Diagnostics go to stderr.
-int serve(const ServeOptions& options);
+enum class ServeResult {
+  stopped,            // a clean shutdown on SIGINT, SIGTERM or SIGHUP
+  failed,             // serving failed: port in use, plugin, device set-up
+  bad_configuration,  // the configuration is wrong (file:line:col logged)
+};
+
+// Serves until a signal. Diagnostics go to stderr.
+ServeResult serve(const ServeOptions& options);
 
 }  // namespace playerkit::daemon

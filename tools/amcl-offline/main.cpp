@@ -1,11 +1,11 @@
 // amcl-offline: post-hoc localization of recorded logs. See --help.
 
 #include <CLI/CLI.hpp>
-#include <csignal>
 #include <iostream>
 #include <unistd.h>
 
 #include "commands.hpp"
+#include "stop_signals.hpp"
 
 namespace {
 
@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? offline::kExitOk : offline::kExitUsage;
   }
-  std::signal(SIGPIPE, SIG_IGN);
+  playerkit::tools::ignore_broken_pipes();
   if (map_app->parsed()) return guarded([&] { return offline::run_map(map, std::cerr); });
   if (perturb_app->parsed()) return guarded([&] { return offline::run_perturb(perturb, std::cout, std::cerr); });
   if (localize_app->parsed()) {

@@ -1,11 +1,11 @@
 // player-cat: dump the data of a Player server's devices. See --help.
 
 #include <CLI/CLI.hpp>
-#include <csignal>
 #include <iostream>
 #include <string>
 
 #include "cat.hpp"
+#include "stop_signals.hpp"
 #include "cat_options.hpp"
 
 namespace {
@@ -40,20 +40,6 @@ stdout closed it), 1 runtime error (cannot connect, no such device, device not
 opened, server gone, output not writable), 2 usage error (bad flag, device
 name, or a --field the device's data does not have).)";
 
-// Set by the signal handler, polled by the dump loop.
-volatile std::sig_atomic_t stop_signal = 0;
-
-void request_stop(int signal_number) { stop_signal = signal_number; }
-
-void install_signal_handlers() {
-  struct sigaction action {};
-  action.sa_handler = request_stop;
-  sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
-  // A closed pipe shows up as a failed write, which ends the run with status 0.
-  std::signal(SIGPIPE, SIG_IGN);
-}
 
 }  // namespace
 
@@ -117,6 +103,6 @@ int main(int argc, char** argv) {
     return cat::kExitUsage;
   }
 
-  install_signal_handlers();
-  return cat::run_cat(options, std::cout, std::cerr, [] { return stop_signal != 0; });
+  playerkit::tools::install_stop_signals();
+  return cat::run_cat(options, std::cout, std::cerr, [] { return playerkit::tools::stop_requested(); });
 }

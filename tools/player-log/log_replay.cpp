@@ -11,6 +11,7 @@
 #include "log_convert.hpp"
 #include "log_info.hpp"
 #include "protocol/interfaces.hpp"
+#include "serve_exit_status.hpp"
 
 namespace playerkit::plog {
 
@@ -120,7 +121,7 @@ int run_replay(const ReplayOptions& options, std::ostream& err, Progress& progre
   serve.readlog_data_queue = kReplayDataQueue;
   serve.readlog_duration = options.duration;
   serve.readlog_burst = options.burst;
-  return daemon::serve(serve);
+  return tools::exit_status_for(daemon::serve(serve));
 }
 
 }  // namespace playerkit::plog

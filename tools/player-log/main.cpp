@@ -1,7 +1,6 @@
 // player-log: inspect, convert, cut and record Player (and CARMEN) logs. See --help.
 
 #include <CLI/CLI.hpp>
-#include <csignal>
 #include <iostream>
 #include <string>
 #include <unistd.h>
@@ -12,6 +11,7 @@
 #include "log_record.hpp"
 #include "log_replay.hpp"
 #include "log_tool.hpp"
+#include "stop_signals.hpp"
 
 namespace {
 
@@ -49,18 +49,6 @@ Signals: SIGINT and SIGTERM stop record cleanly (every line received is written)
 Exit status: 0 done, 1 runtime error (missing or unreadable file, malformed
 line with --strict, cannot connect, no such device), 2 usage error.)";
 
-volatile std::sig_atomic_t stop_signal = 0;
-
-void request_stop(int signal_number) { stop_signal = signal_number; }
-
-void install_signal_handlers() {
-  struct sigaction action {};
-  action.sa_handler = request_stop;
-  sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
-  std::signal(SIGPIPE, SIG_IGN);
-}
 
 // Runs a subcommand, turning its errors into messages and exit statuses.
 template <typename Body>
@@ -195,8 +183,9 @@ int main(int argc, char** argv) {
     plog::parse_record_targets(targets, record_options);
     if (record_options.duration && *record_options.duration <= 0) throw plog::UsageError("--duration must be > 0");
     if (record_options.timeout <= 0) throw plog::UsageError("--timeout must be > 0");
-    install_signal_handlers();
-    status = plog::run_record(record_options, std::cin, std::cout, std::cerr, [] { return stop_signal != 0; });
+    playerkit::tools::install_stop_signals();
+    status = plog::run_record(record_options, std::cin, std::cout, std::cerr,
+                              [] { return playerkit::tools::stop_requested(); });
   });
   return parsed == plog::kExitOk ? status : parsed;
 }

@@ -5,6 +5,7 @@
 
 #include "config/config_file.hpp"
 #include "config/errors.hpp"
+#include "exit_status.hpp"
 
 namespace playerkit::serve {
 namespace {
@@ -56,10 +57,10 @@ int check_config(const std::string& path, std::uint16_t default_port,
         out << "      " << format_property(property) << "\n";
       }
     }
-    return 0;
+    return tools::kExitOk;
   } catch (const config::ConfigError& e) {
     err << e.what() << "\n";
-    return 2;
+    return tools::kExitUsage;
   }
 }
 

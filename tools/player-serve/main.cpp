@@ -10,6 +10,10 @@
 #include "check_config.hpp"
 #include "core/plugin.hpp"
 #include "daemon/serve.hpp"
+#include "exit_status.hpp"
+#include "serve_exit_status.hpp"
+
+namespace tools = playerkit::tools;
 
 namespace {
 
@@ -66,22 +70,22 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
+    return app.exit(e) == 0 ? tools::kExitOk : tools::kExitUsage;
   }
 
   if (!stage_directory.empty() || !gazebo_id.empty()) {
     std::cerr << "player-serve: " << (stage_directory.empty() ? "Gazebo (-g)" : "Stage (-s)")
               << " is not available: playerkit serves real and logged devices only\n";
-    return 2;
+    return tools::kExitUsage;
   }
   if (transport != "tcp") {
     std::cerr << "player-serve: transport '" << transport
               << "' is not available: playerkit serves clients over TCP only\n";
-    return 2;
+    return tools::kExitUsage;
   }
   if (!(readlog_speed > 0 && readlog_speed < 1e6)) {
     std::cerr << "player-serve: -f " << readlog_speed << ": the replay speed must be above 0 and below 1000000\n";
-    return 2;
+    return tools::kExitUsage;
   }
   if (!readlog.empty()) {
     options.readlog = readlog;
@@ -98,12 +102,12 @@ int main(int argc, char** argv) {
           std::cerr);
     } catch (const playerkit::core::PluginError& e) {
       std::cerr << "player-serve: " << e.what() << "\n";
-      return 1;
+      return tools::kExitFailure;
     }
   }
 
   if (!key.empty()) options.auth_key = key;
   if (quiet) options.log_level = playerkit::core::LogLevel::kError;
   if (verbose) options.log_level = playerkit::core::LogLevel::kDebug;
-  return playerkit::daemon::serve(options);
+  return tools::exit_status_for(playerkit::daemon::serve(options));
 }
