@@ -113,6 +113,7 @@ struct RobotDevices {
   }
   core::Device& position(std::uint16_t index = 0) { return device(protocol::kPositionCode, index); }
   core::Device& sonar() { return device(protocol::kSonarCode); }
+  core::Device& power() { return device(protocol::kPowerCode); }
 
   p2os::P2osConnection& connection(core::Device& any) {
     return dynamic_cast<p2os::P2osDeviceDriver&>(any.driver()).connection();
@@ -192,7 +193,7 @@ inline bool nacked(const std::optional<core::Reply>& reply) {
 }
 
 template <class Command>
-void command(core::Device& device, const Command& value) {
+void write_command(core::Device& device, const Command& value) {
   const auto status = device.put_command(1, protocol::encode(value));
   EXPECT_EQ(status, core::Device::CommandStatus::kAccepted);
 }
