@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -114,6 +117,30 @@ class RefusingLaser final : public emulators::DeviceEmulator {
   bool refuse_next_variant_ = false;
 };
 
+// A directory of its own per test (symlinks to ptys, missing ports),
+// removed afterwards.
+class ScratchDirectory {
+ public:
+  ScratchDirectory() {
+    static std::atomic<int> counter{0};
+    path_ = std::filesystem::temp_directory_path() /
+            ("playerkit-sick-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+  }
+  ~ScratchDirectory() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  ScratchDirectory(const ScratchDirectory&) = delete;
+  ScratchDirectory& operator=(const ScratchDirectory&) = delete;
+
+  [[nodiscard]] std::filesystem::path file(const std::string& name) const { return path_ / name; }
+
+ private:
+  std::filesystem::path path_;
+};
+
 struct RigOptions {
   Model model = Model::lms200;
   // Where the laser starts: 38400 spares the tests the 9600 fallback.
@@ -149,7 +176,10 @@ inline emulators::Endpoint endpoint_of(const RigOptions& options) {
 class LaserRig {
  public:
   explicit LaserRig(RigOptions options = {})
-      : options_(options), runner_(make_laser(options), endpoint_of(options), options.faults) {
+      : options_(std::move(options)),
+        runner_(std::make_unique<emulators::EmulatorRunner>(make_laser(options_), endpoint_of(options_),
+                                                            options_.faults)),
+        port_(runner_->device_path()) {
     builtin.logger.set_sink([this](core::LogLevel, std::string_view line) {
       std::lock_guard lock(log_mutex_);
       log_.emplace_back(line);
@@ -161,7 +191,20 @@ class LaserRig {
   [[nodiscard]] std::string driver_name() const {
     return options_.model == Model::lms200 ? "sicklms200" : "sickpls";
   }
-  [[nodiscard]] const std::string& port() const { return runner_.device_path(); }
+  // Where the laser is plugged in (kept while it is unplugged).
+  [[nodiscard]] const std::string& port() const { return port_; }
+
+  // The laser unplugged (its line closed) and, unless `back` is false, a
+  // fresh one (powered up anew, faults and all) plugged in on the same
+  // symlink: a USB adapter pulled and put back.
+  void replug(bool back = true) {
+    runner_.reset();
+    if (back) {
+      runner_ = std::make_unique<emulators::EmulatorRunner>(make_laser(options_), endpoint_of(options_),
+                                                            options_.faults);
+      port_ = runner_->device_path();
+    }
+  }
 
   // Declares laser:0 on the emulator's line with `options` (short reply
   // timeouts and retries by default, so that failures are quick).
@@ -200,9 +243,9 @@ class LaserRig {
 
   template <class Action>
   auto with_laser(Action&& action) {
-    return runner_.with_emulator<RefusingLaser>([&](RefusingLaser& laser) { return action(laser); });
+    return runner_->with_emulator<RefusingLaser>([&](RefusingLaser& laser) { return action(laser); });
   }
-  emulators::EmulatorRunner& runner() { return runner_; }
+  emulators::EmulatorRunner& runner() { return *runner_; }
 
   std::vector<std::string> log_lines() {
     std::lock_guard lock(log_mutex_);
@@ -225,7 +268,8 @@ class LaserRig {
 
  private:
   RigOptions options_;
-  emulators::EmulatorRunner runner_;
+  std::unique_ptr<emulators::EmulatorRunner> runner_;
+  std::string port_;
   std::mutex log_mutex_;
   std::vector<std::string> log_;
 

@@ -38,18 +38,30 @@ std::string SickLaserControl::failure(const std::string& what) const { return po
 
 sick::Reply SickLaserControl::ask(const sick::Request& request, std::uint8_t expected,
                                   const std::string& step) {
-  try {
-    return session_.exchange(request, expected, reply_timeout_);
-  } catch (const SickExchangeError& e) {
-    if (e.kind() == SickExchangeError::Kind::stopped) throw;
-    throw SickSetupError(failure(step + ": " + e.what()));
+  // A reply lost to line noise is asked for again; every step here may be
+  // repeated without harm (T2, which may not, does not come through here).
+  for (int attempt = 1;; ++attempt) {
+    try {
+      return session_.exchange(request, expected, reply_timeout_);
+    } catch (const SickExchangeError& e) {
+      if (e.kind() == SickExchangeError::Kind::no_reply && attempt < kAttempts) continue;
+      if (e.kind() == SickExchangeError::Kind::stopped) throw;
+      throw SickSetupError(failure(step + ": " + e.what()));
+    }
   }
 }
 
 void SickLaserControl::enter_installation_mode() {
   const std::string password(sick::installation_password(model_));
-  const sick::Reply reply = session_.exchange(sick::InstallationModeRequest{password}, sick::kSwitchModeReply,
-                                              reply_timeout_);
+  sick::Reply reply;
+  for (int attempt = 1;; ++attempt) {
+    try {
+      reply = session_.exchange(sick::InstallationModeRequest{password}, sick::kSwitchModeReply, reply_timeout_);
+      break;
+    } catch (const SickExchangeError& e) {
+      if (e.kind() != SickExchangeError::Kind::no_reply || attempt >= kAttempts) throw;
+    }
+  }
   const sick::ModeReply mode = sick::parse_mode_reply(reply);
   if (mode.result == sick::ModeResult::wrong_password) {
     const std::string other = model_ == Model::lms200 ? "a SICK PLS (driver sickpls)" : "a SICK LMS (driver sicklms200)";
@@ -77,8 +89,8 @@ int SickLaserControl::find(const std::vector<int>& rates) {
     }
   }
   const std::string tried = has_speed ? " at " + join_rates(rates) + " baud" : "";
-  throw SickSetupError(failure("no answer from the " + model_name(model_) + tried + " (" +
-                               last_problem + (has_speed ? " at each" : "") +
+  throw SickSetupError(failure("no answer from the " + model_name(model_) + tried + " (" + last_problem +
+                               ", " + std::to_string(kAttempts) + " tries" + (has_speed ? " at each speed" : "") +
                                "): is it powered and connected to this port?"));
 }
 
@@ -86,22 +98,33 @@ void SickLaserControl::switch_rate(int baud) {
   auto& link = session_.link();
   if (link.baud() == 0 || link.baud() == baud) return;
   const int old_baud = link.baud();
-  const sick::ModeReply reply =
-      sick::parse_mode_reply(ask(sick::BaudRateRequest{baud}, sick::kSwitchModeReply,
-                                 "switching to " + std::to_string(baud) + " baud"));
-  if (reply.result != sick::ModeResult::ok) {
-    throw SickSetupError(failure("the laser refused " + std::to_string(baud) + " baud"));
+  // Sent once: a laser whose reply was lost has switched all the same, and
+  // a second T2 at the old speed would be noise to it.
+  std::string lost_reply;
+  try {
+    const sick::ModeReply reply = sick::parse_mode_reply(
+        session_.exchange(sick::BaudRateRequest{baud}, sick::kSwitchModeReply, reply_timeout_));
+    if (reply.result != sick::ModeResult::ok) {
+      throw SickSetupError(failure("the laser refused " + std::to_string(baud) + " baud"));
+    }
+  } catch (const SickExchangeError& e) {
+    if (e.kind() != SickExchangeError::Kind::no_reply) {
+      throw SickSetupError(failure("switching to " + std::to_string(baud) + " baud: " + e.what()));
+    }
+    lost_reply = e.what();
   }
   link.set_baud(baud);
-  // The laser changes speed after its reply; one more T1 proves both ends
-  // agree (an adapter may not really do 500000).
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    try {
-      enter_installation_mode();
-      return;
-    } catch (const SickExchangeError& e) {
-      if (e.kind() == SickExchangeError::Kind::stopped) throw;
-    }
+  // The laser changes speed after its reply; T1 proves both ends agree (an
+  // adapter may not really do 500000).
+  try {
+    enter_installation_mode();
+    return;
+  } catch (const SickExchangeError& e) {
+    if (e.kind() == SickExchangeError::Kind::stopped) throw;
+  }
+  if (!lost_reply.empty()) {
+    throw SickSetupError(failure("switching from " + std::to_string(old_baud) + " to " + std::to_string(baud) +
+                                 " baud: " + lost_reply + ", and no answer at either speed since"));
   }
   throw SickSetupError(failure("the laser accepted " + std::to_string(baud) +
                                " baud but does not answer at that speed (it was at " +

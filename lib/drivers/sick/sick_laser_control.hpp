@@ -11,8 +11,10 @@
 //               measuring mode (reflector levels or not) and unit
 //   stream      T7 all values, or T8 a subrange
 //
-// Failures are SickSetupErrors whose message names the port and says what
-// the laser did (or did not do), ready for a log line or a DriverError.
+// Every request is sent up to kAttempts times while no reply comes (T2
+// once: see switch_rate). Failures are SickSetupErrors whose message names
+// the port and says what the laser did (or did not do), ready for a log
+// line or a DriverError.
 
 #include <chrono>
 #include <stdexcept>
@@ -42,6 +44,10 @@ std::string model_name(Model model);
 
 class SickLaserControl {
  public:
+  // Tries per request before a step fails (1.5 sent T1 twice at each
+  // speed): a reply may be lost to line noise.
+  static constexpr int kAttempts = 2;
+
   SickLaserControl(SickSession& session, Model model, std::string port,
                    std::chrono::milliseconds reply_timeout);
 
