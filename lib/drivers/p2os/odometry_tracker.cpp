@@ -69,7 +69,12 @@ void OdometryTracker::update(std::uint16_t x_position, std::uint16_t y_position,
   if (!session_started_) {
     const geometry::Pose2 before = pose();
     robot_ = from_zero;
-    if (start_pose_) {
+    if (counters_are_pose_) {
+      // SETO went out before this SIP: the counters count from where the
+      // robot obeyed it, which is the origin. (Had this SIP left the robot
+      // before it obeyed, the jump still to come is absorbed below.)
+      correction_ = {};
+    } else if (start_pose_) {
       correction_ = start_pose_->compose(robot_.inverse());
     } else if (first_session_) {
       // As 1.5: x = y = 0 at the first SIP, the heading is the robot's.
@@ -78,6 +83,7 @@ void OdometryTracker::update(std::uint16_t x_position, std::uint16_t y_position,
       correction_ = before.compose(robot_.inverse());
     }
     start_pose_.reset();
+    counters_are_pose_ = false;
     first_session_ = false;
     session_started_ = true;
     have_reading_ = true;
@@ -109,7 +115,8 @@ void OdometryTracker::robot_reset_sent() {
   if (have_reading_ && session_started_) {
     correction_ = robot_.inverse();
   } else {
-    start_pose_ = geometry::Pose2{};
+    counters_are_pose_ = true;
+    start_pose_.reset();
   }
 }
 
@@ -119,6 +126,7 @@ void OdometryTracker::set_pose(const geometry::Pose2& pose) {
   } else {
     // Between sessions: the next session starts from it.
     start_pose_ = pose;
+    counters_are_pose_ = false;
   }
 }
 

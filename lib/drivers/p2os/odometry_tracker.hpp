@@ -70,9 +70,10 @@ class OdometryTracker {
   bool session_started_ = false;  // false: the next reading opens a session
   bool first_session_ = true;
   int reset_window_ = 0;          // SIPs left in which to look for a SETO jump
-  // Set between sessions (SETO or SET_ODOM before the session's first SIP):
-  // the pose the next session starts from.
+  // Set between sessions, for the next session's first SIP: SET_ODOM's
+  // pose, or (after SETO) the robot's counters taken as the pose.
   std::optional<geometry::Pose2> start_pose_;
+  bool counters_are_pose_ = false;
 };
 
 // The shortest signed difference between two 12-bit counter readings.

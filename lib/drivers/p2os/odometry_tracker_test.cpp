@@ -109,15 +109,23 @@ TEST(OdometryTracker, AResetTheRobotIgnoresCausesNoJump) {
   EXPECT_NEAR(odometry.pose().yaw, 0.0, 1e-9);
 }
 
-TEST(OdometryTracker, AResetBeforeTheFirstSipStartsAtZero) {
+TEST(OdometryTracker, AResetBeforeTheFirstSipCountsFromWhereTheRobotObeyedIt) {
+  OdometryTracker odometry(p3dx());
+  odometry.robot_reset_sent();
+  odometry.update(20, 0, 0);  // the robot obeyed, then drove 20 units
+  EXPECT_NEAR(odometry.pose().x, 20 * 0.485, 1e-6);
+  EXPECT_NEAR(odometry.pose().yaw, 0.0, 1e-9);
+}
+
+TEST(OdometryTracker, AResetBeforeTheFirstSipIsContinuousWhenTheFirstSipPrecedesIt) {
   OdometryTracker odometry(p3dx());
   odometry.robot_reset_sent();
   odometry.update(500, 500, 300);  // sent before the robot obeyed
-  EXPECT_NEAR(odometry.pose().x, 0.0, 1e-9);
-  EXPECT_NEAR(odometry.pose().yaw, 0.0, 1e-9);
-  odometry.update(10, 0, 0);  // obeyed
-  EXPECT_NEAR(odometry.pose().x, 10 * 0.485, 1e-6);
-  EXPECT_NEAR(odometry.pose().yaw, 0.0, 1e-9);
+  const geometry::Pose2 first = odometry.pose();
+  odometry.update(10, 0, 0);  // obeyed, then drove 10 units
+  EXPECT_NEAR(odometry.pose().x, first.x + 10 * 0.485 * std::cos(first.yaw), 1e-6);
+  EXPECT_NEAR(odometry.pose().y, first.y + 10 * 0.485 * std::sin(first.yaw), 1e-6);
+  EXPECT_NEAR(odometry.pose().yaw, first.yaw, 1e-9);
 }
 
 TEST(OdometryTracker, ANewSessionContinuesWhereTheLastOneStood) {
