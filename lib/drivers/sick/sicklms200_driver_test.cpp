@@ -178,6 +178,9 @@ TEST(Sicklms200, ScansAreStampedAndCountedAsTheyArrive) {
   EXPECT_GT(counter(rig.driver(), "bytes_in"), 2u * 732u);
   EXPECT_GT(counter(rig.driver(), "bytes_out"), 0u);
   EXPECT_EQ(counter(rig.driver(), "checksum_errors"), 0u);
+  // On a clean line the only bytes skipped are the ACK before each reply.
+  EXPECT_EQ(counter(rig.driver(), "resyncs"),
+            rig.with_laser([](RefusingLaser& l) { return l.inner().requests_answered(); }));
 }
 
 }  // namespace sicklms200_driver_test
