@@ -136,11 +136,14 @@ TEST_F(Sicklms200Requests, AVariantTheLaserRefusesIsNackedAndThePreviousScanRest
       << rig.all_log();
   // Back where it was: 0.5 deg, all 361 values.
   EXPECT_EQ(rig.with_laser([](RefusingLaser& l) { return l.inner().variant(); }), (sick::Variant{180, 50}));
+  EXPECT_EQ(rig.with_laser([](RefusingLaser& l) { return l.inner().mode(); }),
+            SickLaserEmulator::Mode::streaming_all);
   const auto sent = rig.with_laser([](RefusingLaser& l) { return l.inner().scans_sent(); });
+  EXPECT_TRUE(drivers::testing::eventually(
+      [&] { return rig.with_laser([](RefusingLaser& l) { return l.inner().scans_sent(); }) > sent; }));
   const auto scan = rig.next_scan();
   ASSERT_TRUE(scan);
   EXPECT_EQ(scan->range_count, 361);
-  EXPECT_GT(rig.with_laser([](RefusingLaser& l) { return l.inner().scans_sent(); }), sent);
   EXPECT_TRUE(rig.laser().available());
 }
 
