@@ -312,8 +312,10 @@ int main(int argc, char** argv) {
               resolution / 100.0, seconds);
   std::printf("  setup (find, switch to %d, type, variant, configuration, stream): %.0f ms\n", rate,
               std::chrono::duration<double, std::milli>(setup_time).count());
-  std::printf("  line limit: %.0f bytes x 10 bits / %d baud = %.1f ms a scan, %.1f scans/s (the emulator paces so)\n",
-              telegram_bytes, rate, telegram_bytes * 10.0 / rate * 1000.0, rate / (telegram_bytes * 10.0));
+  const double line_rate = rate / (telegram_bytes * 10.0);
+  std::printf("  pacing: the line carries %.0f bytes x 10 bits / %d baud = %.1f scans/s, the mirror 75/s;\n"
+              "          the emulator sends at the slower, %.1f scans/s\n",
+              telegram_bytes, rate, line_rate, std::min(line_rate, 75.0));
   std::printf("  scans sent %zu, published %zu, matched to a sent one %zu (%.1f scans/s published)\n", window_sent,
               published.size(), matched, span_s > 0 ? static_cast<double>(published.size() - 1) / span_s : 0.0);
   std::printf("  driver thread CPU: %.1f us per scan (%.2f %% of one core at this rate)\n", cpu_per_scan_us,
