@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "protocol/codec_instances.hpp"
 #include "protocol/constants.hpp"
 #include "protocol/interfaces.hpp"
 #include "protocol/messages/all.hpp"

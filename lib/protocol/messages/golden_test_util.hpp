@@ -33,6 +33,7 @@
 #include <nlohmann/json.hpp>
 
 #include "protocol/binary_codec.hpp"
+#include "protocol/codec_instances.hpp"
 #include "protocol/errors.hpp"
 #include "protocol/fields.hpp"
 #include "protocol/json_codec.hpp"
