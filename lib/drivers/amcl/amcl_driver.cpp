@@ -330,6 +330,27 @@ core::DriverSpec amcl_driver_spec() {
     return std::make_unique<AmclDriver>(read_amcl_options(context.section), context.devices);
   };
   spec.summary = "adaptive Monte-Carlo localization from odometry and a laser in a known map";
+  spec.doc.manual_section = "7.3";
+  spec.doc.options = {
+      {"map_file/laser_map", "filename", "(required)", "", "the map image (or a ROS .yaml)"},
+      {"map_scale", "length", "0.05", "m", "metres per pixel of the image"},
+      {"map_negate", "int", "0", "", "1: white is occupied"},
+      {"position_index/odom_index", "int", "0", "", "the position device giving odometry"},
+      {"laser_index", "int", "0", "", "the laser device"},
+      {"laser_pose", "tuple", "[0 0 0]", "m m deg", "the laser on the robot"},
+      {"laser_model", "string", "\"likelihood_field\"", "", "likelihood_field or beam"},
+      {"laser_max_samples/laser_max_beams", "int", "30", "", "beams used per scan"},
+      {"laser_range_max", "length", "8", "m", "readings at or beyond it are no return"},
+      {"pf_min_samples", "int", "100", "", "fewest particles"},
+      {"pf_max_samples", "int", "5000", "", "most particles"},
+      {"update_thresh", "tuple", "[0.2 30]", "m deg", "motion before the next laser update"},
+      {"init_pose", "tuple", "[0 0 0]", "m m deg", "the initial pose estimate"},
+      {"init_pose_var", "tuple", "[0.5 0.5 30]", "m m deg", "its standard deviations"},
+      {"seed", "int", "0", "", "random seed"}};
+  spec.doc.requests = {"SET_POSE: restart the filter at a pose", "GET_CONFIG, SET_CONFIG: the filter's settings",
+                       "GET_MAP_INFO, GET_MAP_DATA: the map"};
+  spec.doc.example =
+      "localize:0 ( driver \"amcl\" position_index 0 laser_index 0 map_file \"map.png\" map_scale 0.05 )";
   return spec;
 }
 

@@ -116,6 +116,12 @@ core::DriverSpec udpbroadcast_driver_spec() {
   // 1.5's per-client queues did: messages, unlike motor commands, add up.
   spec.limits = core::DeviceLimits{.request_queue = 8, .data_queue = 64, .command_queue = 64};
   spec.summary = "sends comms commands as UDP broadcasts and publishes every datagram heard";
+  spec.doc.manual_section = "7.43";
+  spec.doc.options = {
+      {"addr", "string", "\"127.255.255.255\"", "", "where datagrams go (1.5: 10.255.255.255; set it for a real network)"},
+      {"port", "int", "6013", "", "the UDP port sent to and listened on"}};
+  spec.doc.requests = {"none: every request NACK"};
+  spec.doc.example = "comms:0 ( driver \"udpbroadcast\" addr \"127.255.255.255\" port 6013 )";
   return spec;
 }
 

@@ -117,6 +117,15 @@ core::DriverSpec readlog_driver_spec(ReadlogSettings settings) {
     return std::make_unique<ReadlogDriver>(sessions->get(options, context.logger), logged);
   };
   spec.summary = "replays the data of a Player text log (player-serve -r LOG)";
+  spec.doc.manual_section = "7.36";
+  spec.doc.options = {
+      {"filename", "filename", "the -r file", "", "the log to replay (relative to the config file); required without -r"},
+      {"index", "int", "the device's index", "", "which logged device of this interface to replay"},
+      {"speed", "float", "1 (-f)", "", "replay speed factor, above 0"},
+      {"autorewind", "int", "0", "", "1: start again at the end of the file"},
+      {"start", "float", "0", "s", "skip the log's first seconds"}};
+  spec.doc.requests = {"every request: NACK"};
+  spec.doc.example = "position:0 ( driver \"readlog\" filename \"run.log\" )";
   return spec;
 }
 

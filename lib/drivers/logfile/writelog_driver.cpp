@@ -198,6 +198,13 @@ core::DriverSpec writelog_driver_spec() {
                                             log_host_name());
   };
   spec.summary = "records the data of other devices into a Player text log";
+  spec.doc.manual_section = "7.48";
+  spec.doc.options = {
+      {"filename", "string", "\"writelog.log\"", "", "the log to write (relative to the working directory)"},
+      {"devices", "tuple", "(required)", "", "the devices to record: [\"position:0\" \"laser:0\"]"},
+      {"alwayson", "int", "0", "", "1: record from start-up, without a client"}};
+  spec.doc.requests = {"every request: NACK"};
+  spec.doc.example = "null:0 ( driver \"writelog\" filename \"run.log\" devices [\"position:0\" \"laser:0\"] alwayson 1 )";
   return spec;
 }
 

@@ -73,6 +73,11 @@ core::DriverSpec lifomcom_driver_spec() {
   spec.factory = [](const core::DriverContext&) { return std::make_unique<LifomcomDriver>(); };
   spec.limits = core::DeviceLimits{20};  // 1.5's request queue for lifomcom
   spec.summary = "per-channel LIFO message stacks for client-to-client messages (mcom)";
+  spec.doc.manual_section = "7.26";
+  spec.doc.requests = {"PUSH: a message onto the (type, channel) stack; a full stack drops its oldest",
+                       "POP, READ: the newest message (POP removes it); NACK when there is none",
+                       "CLEAR: empties the stack", "SET_CAPACITY: 1 to 10 messages (larger is 10), 0 NACK"};
+  spec.doc.example = "mcom:0 ( driver \"lifomcom\" )";
   return spec;
 }
 

@@ -16,6 +16,7 @@ core::DriverSpec null_driver_spec() {
   spec.factory = [](const core::DriverContext&) { return std::make_unique<NullDriver>(); };
   spec.limits = core::DeviceLimits{};
   spec.summary = "placeholder device on the null interface: no data, every request NACK";
+  spec.doc.example = "null:0 ( driver \"null\" )";
   return spec;
 }
 

@@ -204,6 +204,13 @@ core::DriverSpec passthrough_driver_spec() {
   spec.interface_limits[protocol::kCommsCode] =
       core::DeviceLimits{.request_queue = 8, .data_queue = 64, .command_queue = 64};
   spec.summary = "serves a device of another Player server (any interface)";
+  spec.doc.manual_section = "7.31";
+  spec.doc.needs_hardware = true;  // a remote server
+  spec.doc.options = {{"host", "string", "\"localhost\"", "", "the other Player server"},
+                      {"port", "int", "6665", "", "its TCP port"},
+                      {"index", "int", "0", "", "the index of its device of this section's interface"}};
+  spec.doc.requests = {"every request: forwarded to the remote device and its reply returned"};
+  spec.doc.example = "laser:0 ( driver \"passthrough\" host \"robot1\" port 6665 index 0 )";
   return spec;
 }
 
