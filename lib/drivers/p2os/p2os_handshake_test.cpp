@@ -149,6 +149,19 @@ TEST(P2osHandshake, JoystickOptionLetsTheJoystickDrive) {
   EXPECT_TRUE(eventually([&] { return robot.received(command::joydrive) == 1u; }));
 }
 
+TEST(P2osHandshake, RadioModemDialFirstThenSynchronise) {
+  // The emulator is a robot on a plain line: no modem answers the dial, so
+  // after the 3.4 s 1.5 waited there is one warning and the handshake goes on.
+  EmulatedRobot robot;
+  RobotDevices devices(robot.port(),
+                       "position:0 ( driver \"p2os_position\" port \"$PORT\" radio 1 connect_timeout 8 )\n");
+  ASSERT_TRUE(devices.position().subscribe()) << devices.log.all();
+  EXPECT_EQ(devices.log.count("the radio modem did not report a connection", core::LogLevel::kWarning), 1u);
+  // "WMS2\r" reached the robot first, as line noise to it.
+  EXPECT_GE(robot.with([](P2osRobotEmulator& e) { return e.counters().noise_bytes; }), 5u);
+  EXPECT_TRUE(more_data(devices.position()));
+}
+
 TEST(P2osHandshake, NoJoystickDriveByDefault) {
   EmulatedRobot robot;
   RobotDevices devices(robot.port(), std::string(kRobot));
