@@ -9,7 +9,7 @@ namespace playerkit::player_drivers {
 // whole text to SharedLines.
 class SharedLines::LineBuffer final : public std::streambuf {
  public:
-  explicit LineBuffer(SharedLines& lines) : lines_(lines) {}
+  LineBuffer(SharedLines& lines, LineFilter filter) : lines_(lines), filter_(std::move(filter)) {}
 
  protected:
   int_type overflow(int_type character) override {
@@ -25,7 +25,7 @@ class SharedLines::LineBuffer final : public std::streambuf {
       const std::size_t end = pending_.rfind('\n') + 1;
       const std::string whole = pending_.substr(0, end);
       pending_.erase(0, end);
-      if (!lines_.write_text(whole)) return 0;
+      if (!lines_.write_text(filtered(whole))) return 0;
     }
     return count;
   }
@@ -34,12 +34,31 @@ class SharedLines::LineBuffer final : public std::streambuf {
  private:
   bool hand_over() {
     if (pending_.empty()) return true;
-    const bool written = lines_.write_text(pending_);
+    const bool written = lines_.write_text(filtered(pending_));
     pending_.clear();
     return written;
   }
 
+  // Each whole line through the filter; a partial last line (a flush
+  // before its newline) goes through as it is.
+  std::string filtered(const std::string& text) const {
+    if (!filter_) return text;
+    std::string result;
+    std::size_t start = 0;
+    while (start < text.size()) {
+      const std::size_t end = text.find('\n', start);
+      if (end == std::string::npos) {
+        result += text.substr(start);
+        break;
+      }
+      if (auto line = filter_(std::string_view(text).substr(start, end - start))) result += *line + "\n";
+      start = end + 1;
+    }
+    return result;
+  }
+
   SharedLines& lines_;
+  LineFilter filter_;
   std::string pending_;
 };
 
@@ -58,6 +77,7 @@ class OwningStream final : public std::ostream {
 }  // namespace
 
 bool SharedLines::write_text(std::string_view text) {
+  if (text.empty()) return true;
   const std::lock_guard lock(mutex_);
   target_.write(text.data(), static_cast<std::streamsize>(text.size()));
   target_.flush();
@@ -70,8 +90,8 @@ bool SharedLines::write_line(std::string_view line) {
   return write_text(text);
 }
 
-std::unique_ptr<std::ostream> SharedLines::open() {
-  return std::make_unique<OwningStream>(std::make_unique<LineBuffer>(*this));
+std::unique_ptr<std::ostream> SharedLines::open(LineFilter filter) {
+  return std::make_unique<OwningStream>(std::make_unique<LineBuffer>(*this, std::move(filter)));
 }
 
 }  // namespace playerkit::player_drivers

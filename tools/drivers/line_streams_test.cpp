@@ -48,6 +48,17 @@ TEST(SharedLines, APartialLineWaitsForItsEndOrAFlush) {
   EXPECT_EQ(target.str(), "half and the rest\nnextdirect\n");
 }
 
+TEST(SharedLines, AFilterRewritesOrDropsEachLine) {
+  std::ostringstream target;
+  SharedLines lines(target);
+  const auto stream = lines.open([](std::string_view line) -> std::optional<std::string> {
+    if (line.starts_with("drop")) return std::nullopt;
+    return "<" + std::string(line) + ">";
+  });
+  *stream << "one\ndrop this\ntwo\n" << std::flush;
+  EXPECT_EQ(target.str(), "<one>\n<two>\n");
+}
+
 TEST(SharedLines, AFailedTargetMakesTheStreamBad) {
   std::ostringstream target;
   target.setstate(std::ios::badbit);

@@ -45,8 +45,14 @@ class DaemonLog {
  public:
   DaemonLog(const RunPlan& plan, SharedLines& err) : plan_(plan), err_(err) {}
 
+  // Once known: "laser:0@41234" is then shown as "laser:0" (there is one port).
+  void set_port(std::uint16_t port) { port_ = port; }
+  // A device's set-up failed (and this log said why).
+  [[nodiscard]] const std::atomic<bool>& setup_failed() const { return setup_failed_; }
+
   core::Logger::Sink sink() {
     return [this](core::LogLevel level, std::string_view message) {
+      if (message.find("setup failed") != std::string_view::npos) setup_failed_ = true;
       const auto located = split_config_message(kGeneratedConfigName, message);
       if (located && located->text.find("is defined but not used") != std::string::npos) {
         const auto option = plan_.option_lines.find(located->line);
@@ -56,8 +62,14 @@ class DaemonLog {
           return;
         }
       }
-      err_.write_line("player-drivers: " + std::string(core::to_string(level)) + ": " +
-                      explain_config_message(plan_, kGeneratedConfigName, message));
+      std::string text = explain_config_message(plan_, kGeneratedConfigName, message);
+      if (const std::uint16_t port = port_; port != 0) {
+        const std::string suffix = "@" + std::to_string(port);
+        for (std::size_t at = text.find(suffix); at != std::string::npos; at = text.find(suffix, at)) {
+          text.erase(at, suffix.size());
+        }
+      }
+      err_.write_line("player-drivers: " + std::string(core::to_string(level)) + ": " + text);
     };
   }
 
@@ -69,9 +81,33 @@ class DaemonLog {
  private:
   const RunPlan& plan_;
   SharedLines& err_;
+  std::atomic<std::uint16_t> port_{0};
+  std::atomic<bool> setup_failed_{false};
   mutable std::mutex mutex_;
   std::vector<OptionAssignment> unused_;
 };
+
+// player-cat's and player-send's messages as player-drivers': their names
+// replaced, and their "could not be opened ... the server's log says why"
+// (with the device list after it) left out once the daemon's own line has
+// said why.
+SharedLines::LineFilter client_diagnostics(const std::atomic<bool>& setup_failed) {
+  auto dropping = std::make_shared<bool>(false);
+  return [&setup_failed, dropping](std::string_view line) -> std::optional<std::string> {
+    if (*dropping && (line == "the server has:" || line.starts_with("  "))) return std::nullopt;
+    *dropping = false;
+    const bool redundant = line.find("could not be opened") != std::string_view::npos ||
+                           line.find("sending the request anyway") != std::string_view::npos;
+    if (setup_failed && redundant) {
+      *dropping = true;
+      return std::nullopt;
+    }
+    for (const std::string_view program : {"player-cat: ", "player-send: "}) {
+      if (line.starts_with(program)) return "player-drivers: " + std::string(line.substr(program.size()));
+    }
+    return std::string(line);
+  };
+}
 
 // "null reads no option 'foo'; its options: a, b" (or where to look).
 std::string unused_option_text(const RunPlan& plan, const OptionAssignment& option) {
@@ -136,6 +172,7 @@ struct Served {
   std::vector<protocol::DeviceAddress> read_devices;
   std::optional<cat::CatOptions> cat_options;
   std::optional<protocol::Message> request;
+  const std::atomic<bool>* setup_failed = nullptr;  // DaemonLog's
 };
 
 // Waits for a stop or the --duration with nothing to read.
@@ -154,14 +191,14 @@ int dump(const Served& served, const cat::CommandLine& cat_line, SharedLines& ou
   cat::CatOptions options = *served.cat_options;
   options.server = {served.host, served.port};
   const auto out_stream = out.open();
-  const auto err_stream = err.open();
+  const auto err_stream = err.open(client_diagnostics(*served.setup_failed));
   return cat::run_cat(options, *out_stream, *err_stream, stop);
 }
 
 int send_request(const Served& served, double timeout_seconds, SharedLines& out, SharedLines& err) {
   const auto timeout = std::chrono::milliseconds(static_cast<long long>(timeout_seconds * 1000.0));
   const auto out_stream = out.open();
-  const auto err_stream = err.open();
+  const auto err_stream = err.open(client_diagnostics(*served.setup_failed));
   try {
     auto connection = client::Client::connect(served.host, served.port, timeout);
     connection.set_timeout(timeout);
@@ -185,7 +222,7 @@ int feed_and_dump(const Served& served, const RunOptions& options, const RunStre
   std::atomic<int> feed_status{kExitOk};
   std::thread feeder([&] {
     const auto out_stream = out.open();
-    const auto err_stream = err.open();
+    const auto err_stream = err.open(client_diagnostics(*served.setup_failed));
     const auto timeout = std::chrono::milliseconds(static_cast<long long>(options.cat_line.timeout * 1000.0));
     int status = kExitOk;
     try {
@@ -322,6 +359,8 @@ int run_driver(const RunOptions& options, const RunStreams& streams, const std::
   }
 
   served.port = daemon->default_port();
+  served.setup_failed = &log.setup_failed();
+  log.set_port(served.port);
   served.host = options.bind_address == "0.0.0.0" ? "127.0.0.1" : options.bind_address;
   std::vector<core::Device*> devices;
   std::vector<MonitoredDevice> monitored;

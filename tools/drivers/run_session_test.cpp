@@ -289,6 +289,20 @@ TEST(RunSession, ALaserOnAnEmulatorWhenTheDriverIsBuilt) {
   EXPECT_TRUE(contains(outcome.err, " > 02 00 0A 00 20 00 53 49 43 4B 5F 4C 4D 53")) << outcome.err;
 }
 
+TEST(RunSession, ADriverThatCannotSetUpSaysWhyOnce) {
+  if (!registered("sicklms200")) GTEST_SKIP() << "sicklms200 is not built yet";
+  const std::string missing = scratch("no-such-port").string();
+  auto line = line_of({"sicklms200", "port=" + missing});
+  line.count = 1;
+  const Outcome outcome = run(line);
+  EXPECT_EQ(outcome.status, kExitFailure);
+  EXPECT_TRUE(contains(outcome.err, "player-drivers: error: laser:0 (sicklms200): setup failed: no such port " + missing))
+      << outcome.err;
+  // player-cat's own account of the refusal adds nothing to that line.
+  EXPECT_FALSE(contains(outcome.err, "could not be opened")) << outcome.err;
+  EXPECT_FALSE(contains(outcome.err, "player-cat")) << outcome.err;
+}
+
 TEST(RunSession, APioneerFamilyOnAnEmulatorWhenItsDriversAreBuilt) {
   if (!registered("p2os_position")) GTEST_SKIP() << "the p2os drivers are not built yet";
   emulators::EmulatorRunner robot(emulators::make_emulator("p2os", {}), emulators::PtyEndpoint{});
