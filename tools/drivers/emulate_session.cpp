@@ -108,12 +108,13 @@ int run_emulators(const EmulateOptions& options, std::ostream& out, std::ostream
   auto next_stats = start + std::chrono::seconds(1);
   while (!stop_requested()) {
     const auto now = Clock::now();
-    if (options.duration && now - start >= std::chrono::duration<double>(*options.duration)) break;
+    // Stats that are due go out even when the duration ends at the same look.
     if (options.stats && now >= next_stats) {
       next_stats += std::chrono::seconds(1);
       for (std::size_t i = 0; i < rig->size(); ++i) err << stats_line(*rig, i) << "\n";
       err << std::flush;
     }
+    if (options.duration && now - start >= std::chrono::duration<double>(*options.duration)) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   return kExitOk;
