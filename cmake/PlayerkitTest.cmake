@@ -8,6 +8,10 @@
 # not in an anonymous one shared by the whole batch.
 # -DPLAYERKIT_UNITY_TESTS=OFF compiles them one by one.
 option(PLAYERKIT_UNITY_TESTS "Compile test sources in batches" ON)
+# Extra compile options for test sources only: CI passes -O0, since test code
+# runs once and most of its compile time is optimising gtest's expansions;
+# the library code under test keeps the build type's flags.
+set(PLAYERKIT_TEST_COMPILE_OPTIONS "" CACHE STRING "Compile options for test sources (e.g. -O0)")
 set(PLAYERKIT_UNITY_BATCH 8 CACHE STRING "Test sources per batch")
 
 function(playerkit_add_test)
@@ -19,6 +23,9 @@ function(playerkit_add_test)
   target_link_libraries(${ARG_NAME} PRIVATE ${ARG_LIBS} GTest::gtest GTest::gtest_main playerkit_warnings)
   target_compile_definitions(${ARG_NAME} PRIVATE
     PLAYERKIT_TEST_DATA_DIR="${PROJECT_SOURCE_DIR}/tests/data")
+  if(PLAYERKIT_TEST_COMPILE_OPTIONS)
+    target_compile_options(${ARG_NAME} PRIVATE ${PLAYERKIT_TEST_COMPILE_OPTIONS})
+  endif()
   if(PLAYERKIT_UNITY_TESTS)
     set_target_properties(${ARG_NAME} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${PLAYERKIT_UNITY_BATCH})
   endif()

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -25,7 +28,28 @@ TEST(BuiltinDrivers, RegistersEveryDriverSortedByName) {
     EXPECT_GE(spec->limits.request_queue, 1u) << spec->name;
     EXPECT_FALSE(spec->family.empty()) << spec->name;  // generated from the families built
   }
-  EXPECT_EQ(names, (std::vector<std::string>{"amcl", "lifomcom", "null", "passthrough", "readlog", "udpbroadcast", "writelog"}));
+  // What each family registers, as Player 1.5 named the drivers.
+  const std::map<std::string, std::vector<std::string>> family_drivers{
+      {"amcl", {"amcl"}},
+      {"comms", {"udpbroadcast"}},
+      {"logfile", {"readlog", "writelog"}},
+      {"mcom", {"lifomcom"}},
+      {"null", {"null"}},
+      {"p2os",
+       {"p2os_aio", "p2os_bumper", "p2os_cmucam", "p2os_compass", "p2os_dio", "p2os_gripper", "p2os_gyro",
+        "p2os_position", "p2os_power", "p2os_sonar", "p2os_sound"}},
+      {"passthrough", {"passthrough"}},
+      {"sick", {"sicklms200", "sickpls"}},
+  };
+  std::vector<std::string> expected;
+  std::stringstream built(PLAYERKIT_BUILT_DRIVER_FAMILIES);
+  for (std::string family; std::getline(built, family, ',');) {
+    ASSERT_TRUE(family_drivers.contains(family)) << "a new family: add its drivers here: " << family;
+    const auto& names_of_family = family_drivers.at(family);
+    expected.insert(expected.end(), names_of_family.begin(), names_of_family.end());
+  }
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(names, expected);
 }
 
 TEST(BuiltinDrivers, EachDriverNamesItsFamily) {
