@@ -12,6 +12,7 @@
 
 #include "links/byte_link.hpp"
 #include "links/pseudo_terminal.hpp"
+#include "support/scratch_directory.hpp"
 
 namespace playerkit::links::test_support {
 
@@ -21,24 +22,7 @@ using Bytes = std::vector<std::uint8_t>;
 // Generous: only reached when something is broken.
 inline constexpr auto kPatience = 5s;
 
-class TemporaryDirectory {
- public:
-  TemporaryDirectory() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "links_test.XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
-    path_ = pattern;
-  }
-  TemporaryDirectory(const TemporaryDirectory&) = delete;
-  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
-  ~TemporaryDirectory() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
+using TemporaryDirectory = ::playerkit::testing::ScratchDirectory;
 
 // Reads until `count` bytes arrived or kPatience passed.
 inline Bytes read_exactly(ByteLink& link, std::size_t count) {

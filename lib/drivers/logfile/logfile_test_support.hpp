@@ -23,31 +23,11 @@
 #include "protocol/interfaces.hpp"
 #include "protocol/message.hpp"
 #include "protocol/messages/position.hpp"
+#include "support/scratch_directory.hpp"
 
 namespace playerkit::drivers::testing {
 
-// A directory of its own per test, removed afterwards.
-class ScratchDirectory {
- public:
-  ScratchDirectory() {
-    static std::atomic<int> counter{0};
-    path_ = std::filesystem::temp_directory_path() /
-            ("playerkit-logfile-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchDirectory() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  ScratchDirectory(const ScratchDirectory&) = delete;
-  ScratchDirectory& operator=(const ScratchDirectory&) = delete;
-
-  [[nodiscard]] std::filesystem::path file(const std::string& name) const { return path_ / name; }
-
- private:
-  std::filesystem::path path_;
-};
+using ::playerkit::testing::ScratchDirectory;
 
 inline std::vector<std::uint8_t> position_payload(std::int32_t x_mm) {
   protocol::PositionData data;

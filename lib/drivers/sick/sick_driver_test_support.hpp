@@ -32,6 +32,7 @@
 #include "protocol/binary_codec.hpp"
 #include "protocol/interfaces.hpp"
 #include "protocol/messages/laser.hpp"
+#include "support/scratch_directory.hpp"
 
 namespace playerkit::drivers::sick_driver_test_support {
 
@@ -117,29 +118,7 @@ class RefusingLaser final : public emulators::DeviceEmulator {
   bool refuse_next_variant_ = false;
 };
 
-// A directory of its own per test (symlinks to ptys, missing ports),
-// removed afterwards.
-class ScratchDirectory {
- public:
-  ScratchDirectory() {
-    static std::atomic<int> counter{0};
-    path_ = std::filesystem::temp_directory_path() /
-            ("playerkit-sick-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchDirectory() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  ScratchDirectory(const ScratchDirectory&) = delete;
-  ScratchDirectory& operator=(const ScratchDirectory&) = delete;
-
-  [[nodiscard]] std::filesystem::path file(const std::string& name) const { return path_ / name; }
-
- private:
-  std::filesystem::path path_;
-};
+using ::playerkit::testing::ScratchDirectory;
 
 struct RigOptions {
   Model model = Model::lms200;
