@@ -14,19 +14,6 @@ namespace p2os_requests_test {
 using namespace p2os_testing;
 using Bytes = std::vector<std::uint8_t>;
 
-constexpr std::string_view kEveryDevice =
-    "position:0 ( driver \"p2os_position\" port \"$PORT\" )\n"
-    "sonar:0 ( driver \"p2os_sonar\" )\n"
-    "gripper:0 ( driver \"p2os_gripper\" )\n"
-    "power:0 ( driver \"p2os_power\" )\n"
-    "bumper:0 ( driver \"p2os_bumper\" )\n"
-    "aio:0 ( driver \"p2os_aio\" )\n"
-    "dio:0 ( driver \"p2os_dio\" )\n"
-    "blobfinder:0 ( driver \"p2os_cmucam\" )\n"
-    "position:1 ( driver \"p2os_compass\" )\n"
-    "position:2 ( driver \"p2os_gyro\" )\n"
-    "sound:0 ( driver \"p2os_sound\" )\n";
-
 struct Fixture : ::testing::Test {
   void SetUp() override {
     for (core::Device* device : devices.builtin.devices.all()) ASSERT_TRUE(device->subscribe()) << device->name();

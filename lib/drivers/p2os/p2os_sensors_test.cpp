@@ -27,19 +27,6 @@ using namespace p2os_testing;
 namespace command = hardware::p2os::command;
 namespace gripper_state = hardware::p2os::gripper_state;
 
-constexpr std::string_view kEveryDevice =
-    "position:0 ( driver \"p2os_position\" port \"$PORT\" )\n"
-    "sonar:0 ( driver \"p2os_sonar\" )\n"
-    "gripper:0 ( driver \"p2os_gripper\" )\n"
-    "power:0 ( driver \"p2os_power\" )\n"
-    "bumper:0 ( driver \"p2os_bumper\" )\n"
-    "aio:0 ( driver \"p2os_aio\" )\n"
-    "dio:0 ( driver \"p2os_dio\" )\n"
-    "blobfinder:0 ( driver \"p2os_cmucam\" )\n"
-    "position:1 ( driver \"p2os_compass\" )\n"
-    "position:2 ( driver \"p2os_gyro\" )\n"
-    "sound:0 ( driver \"p2os_sound\" )\n";
-
 // A wall across the world at x = 1.5 m (and beyond), the robot at the origin.
 grid::OccupancyGrid wall_ahead(double wall_x) {
   grid::OccupancyGrid map(100, 100, 0.05, {-2.5, -2.5}, grid::CellState::free);

@@ -27,6 +27,21 @@
 
 namespace playerkit::drivers::p2os_testing {
 
+// All eleven devices of one robot in 1.5's form, `port` on the first
+// (replace $PORT).
+inline constexpr std::string_view kEveryDevice =
+    "position:0 ( driver \"p2os_position\" port \"$PORT\" )\n"
+    "sonar:0 ( driver \"p2os_sonar\" )\n"
+    "gripper:0 ( driver \"p2os_gripper\" )\n"
+    "power:0 ( driver \"p2os_power\" )\n"
+    "bumper:0 ( driver \"p2os_bumper\" )\n"
+    "aio:0 ( driver \"p2os_aio\" )\n"
+    "dio:0 ( driver \"p2os_dio\" )\n"
+    "blobfinder:0 ( driver \"p2os_cmucam\" )\n"
+    "position:1 ( driver \"p2os_compass\" )\n"
+    "position:2 ( driver \"p2os_gyro\" )\n"
+    "sound:0 ( driver \"p2os_sound\" )\n";
+
 using namespace std::chrono_literals;
 using drivers::testing::eventually;
 using emulators::P2osRobotEmulator;

@@ -11,6 +11,7 @@
 #include "hardware/p2os/robot_params.hpp"
 #include "hardware/p2os/sip.hpp"
 #include "hardware/p2os/sync.hpp"
+#include "hardware/p2os/test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -29,13 +30,7 @@ using namespace std::chrono_literals;
 
 using Frames = std::vector<std::vector<std::uint8_t>>;
 
-inline std::vector<std::uint8_t> hex(std::string_view text) {
-  std::vector<std::uint8_t> bytes;
-  std::istringstream in{std::string(text)};
-  std::string word;
-  while (in >> word) bytes.push_back(static_cast<std::uint8_t>(std::stoul(word, nullptr, 16)));
-  return bytes;
-}
+using hardware::p2os::testing::hex;
 
 // A host on the other end of the line: writes frames at the current
 // simulated time, lets time pass, and keeps every packet the robot sent.
