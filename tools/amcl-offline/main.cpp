@@ -120,11 +120,11 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? offline::kExitOk : offline::kExitUsage;
   }
   playerkit::tools::ignore_broken_pipes();
-  if (map_app->parsed()) return guarded([&] { return offline::run_map(map, std::cerr); });
+  if (map_app->parsed()) return guarded([&] { return offline::run_map(offline::make_map_options(map), std::cerr); });
   if (perturb_app->parsed()) return guarded([&] { return offline::run_perturb(perturb, std::cout, std::cerr); });
   if (localize_app->parsed()) {
     localize.progress = isatty(STDERR_FILENO) == 1;
-    return guarded([&] { return offline::run_localize(localize, std::cout, std::cerr); });
+    return guarded([&] { return offline::run_localize(offline::make_localize_options(localize), std::cout, std::cerr); });
   }
   return guarded([&] { return offline::run_eval(eval, std::cout, std::cerr); });
 }
