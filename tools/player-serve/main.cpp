@@ -1,13 +1,12 @@
 // player-serve: the Player 1.5 device server. See --help.
 
-#include <cstdint>
 #include <iostream>
 #include <string>
-#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "check_config.hpp"
+#include "serve_options.hpp"
 #include "core/plugin.hpp"
 #include "daemon/serve.hpp"
 #include "exit_status.hpp"
@@ -42,30 +41,22 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("player-serve (playerkit) ") + PLAYERKIT_VERSION +
                                         ", Player protocol " + PLAYERKIT_PLAYER_VERSION);
 
-  playerkit::daemon::ServeOptions options;
-  bool check = false;
-  bool quiet = false;
-  bool verbose = false;
-  std::string readlog;
-  double readlog_speed = 1.0;
-  std::string stage_directory;
-  std::string gazebo_id;
-  std::string key;
-  std::string transport = "tcp";
-  app.add_option("CONFIG", options.config_path, "configuration file (.cfg)")->required();
-  app.add_option("-p,--port", options.port, "TCP port for devices outside a robot section")
+  playerkit::serve::ServeCommandLine command_line;
+  app.add_option("CONFIG", command_line.config_path, "configuration file (.cfg)")->required();
+  app.add_option("-p,--port", command_line.port, "TCP port for devices outside a robot section")
       ->capture_default_str();
-  app.add_option("-k,--key", key, "require clients to authenticate with this key (31 characters used)");
-  app.add_option("-d,--plugin", options.plugins, "load drivers from this shared object (repeatable)");
-  app.add_option("--bind", options.bind_address, "address to listen on")->capture_default_str();
-  app.add_option("-r,--readlog", readlog, "replay this log file: the devices with driver readlog serve its data");
-  app.add_option("-f,--readlogspeed", readlog_speed, "replay speed factor for -r (2 = twice as fast)");
-  app.add_option("-t,--transport", transport, "tcp (udp is not available)")->capture_default_str();
-  app.add_option("-s", stage_directory, "Stage devices (not available in playerkit)");
-  app.add_option("-g", gazebo_id, "Gazebo server (not available in playerkit)");
-  app.add_flag("-q,--quiet", quiet, "errors only");
-  app.add_flag("-v,--verbose", verbose, "also debug messages (client traffic problems, set-up)");
-  app.add_flag("--check", check, "validate the configuration, list its devices, and exit");
+  app.add_option("-k,--key", command_line.key, "require clients to authenticate with this key (31 characters used)");
+  app.add_option("-d,--plugin", command_line.plugins, "load drivers from this shared object (repeatable)");
+  app.add_option("--bind", command_line.bind_address, "address to listen on")->capture_default_str();
+  app.add_option("-r,--readlog", command_line.readlog,
+                 "replay this log file: the devices with driver readlog serve its data");
+  app.add_option("-f,--readlogspeed", command_line.readlog_speed, "replay speed factor for -r (2 = twice as fast)");
+  app.add_option("-t,--transport", command_line.transport, "tcp (udp is not available)")->capture_default_str();
+  app.add_option("-s", command_line.stage_directory, "Stage devices (not available in playerkit)");
+  app.add_option("-g", command_line.gazebo_id, "Gazebo server (not available in playerkit)");
+  app.add_flag("-q,--quiet", command_line.quiet, "errors only");
+  app.add_flag("-v,--verbose", command_line.verbose, "also debug messages (client traffic problems, set-up)");
+  app.add_flag("--check", command_line.check, "validate the configuration, list its devices, and exit");
 
   try {
     app.parse(argc, argv);
@@ -73,25 +64,15 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? tools::kExitOk : tools::kExitUsage;
   }
 
-  if (!stage_directory.empty() || !gazebo_id.empty()) {
-    std::cerr << "player-serve: " << (stage_directory.empty() ? "Gazebo (-g)" : "Stage (-s)")
-              << " is not available: playerkit serves real and logged devices only\n";
+  playerkit::serve::ServeRequest request;
+  try {
+    request = playerkit::serve::make_serve_options(command_line);
+  } catch (const tools::UsageError& e) {
+    std::cerr << "player-serve: " << e.what() << "\n";
     return tools::kExitUsage;
   }
-  if (transport != "tcp") {
-    std::cerr << "player-serve: transport '" << transport
-              << "' is not available: playerkit serves clients over TCP only\n";
-    return tools::kExitUsage;
-  }
-  if (!(readlog_speed > 0 && readlog_speed < 1e6)) {
-    std::cerr << "player-serve: -f " << readlog_speed << ": the replay speed must be above 0 and below 1000000\n";
-    return tools::kExitUsage;
-  }
-  if (!readlog.empty()) {
-    options.readlog = readlog;
-    options.readlog_speed = readlog_speed;
-  }
-  if (check) {
+  const auto& options = request.options;
+  if (request.check_only) {
     playerkit::core::Logger logger("player-serve");
     logger.set_level(playerkit::core::LogLevel::kError);
     try {
@@ -105,9 +86,5 @@ int main(int argc, char** argv) {
       return tools::kExitFailure;
     }
   }
-
-  if (!key.empty()) options.auth_key = key;
-  if (quiet) options.log_level = playerkit::core::LogLevel::kError;
-  if (verbose) options.log_level = playerkit::core::LogLevel::kDebug;
   return tools::exit_status_for(playerkit::daemon::serve(options));
 }

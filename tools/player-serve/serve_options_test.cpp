@@ -1,0 +1,115 @@
+#include "serve_options.hpp"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <string>
+
+namespace serve_options_test {
+
+using playerkit::core::LogLevel;
+using playerkit::serve::make_serve_options;
+using playerkit::serve::ServeCommandLine;
+using playerkit::serve::UsageError;
+
+ServeCommandLine config_only() {
+  ServeCommandLine command_line;
+  command_line.config_path = "robot.cfg";
+  return command_line;
+}
+
+// The UsageError's text, or "" when none was thrown.
+std::string usage_error(const ServeCommandLine& command_line) {
+  try {
+    (void)make_serve_options(command_line);
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ServeOptions, DefaultsAreTheDaemons) {
+  const auto request = make_serve_options(config_only());
+  const playerkit::daemon::ServeOptions defaults;
+  EXPECT_FALSE(request.check_only);
+  EXPECT_EQ(request.options.config_path, "robot.cfg");
+  EXPECT_EQ(request.options.port, defaults.port);
+  EXPECT_EQ(request.options.bind_address, defaults.bind_address);
+  EXPECT_FALSE(request.options.auth_key.has_value());
+  EXPECT_FALSE(request.options.readlog.has_value());
+  EXPECT_EQ(request.options.log_level, LogLevel::kInfo);
+}
+
+TEST(ServeOptions, FlagsReachTheDaemon) {
+  auto command_line = config_only();
+  command_line.port = 7000;
+  command_line.bind_address = "127.0.0.1";
+  command_line.key = "secret";
+  command_line.plugins = {"./a.so", "./b.so"};
+  command_line.readlog = "run.log";
+  command_line.readlog_speed = 2.5;
+  command_line.check = true;
+  const auto request = make_serve_options(command_line);
+  EXPECT_TRUE(request.check_only);
+  EXPECT_EQ(request.options.port, 7000);
+  EXPECT_EQ(request.options.bind_address, "127.0.0.1");
+  ASSERT_TRUE(request.options.auth_key.has_value());
+  EXPECT_EQ(*request.options.auth_key, "secret");
+  EXPECT_EQ(request.options.plugins, command_line.plugins);
+  ASSERT_TRUE(request.options.readlog.has_value());
+  EXPECT_EQ(*request.options.readlog, "run.log");
+  EXPECT_DOUBLE_EQ(request.options.readlog_speed, 2.5);
+}
+
+// -f alone is checked but changes nothing: there is no log to replay.
+TEST(ServeOptions, ReplaySpeedWithoutLogIsIgnored) {
+  auto command_line = config_only();
+  command_line.readlog_speed = 3;
+  const auto request = make_serve_options(command_line);
+  EXPECT_FALSE(request.options.readlog.has_value());
+  EXPECT_DOUBLE_EQ(request.options.readlog_speed, 1.0);
+}
+
+TEST(ServeOptions, QuietAndVerboseSetTheLogLevelVerboseWinning) {
+  auto command_line = config_only();
+  command_line.quiet = true;
+  EXPECT_EQ(make_serve_options(command_line).options.log_level, LogLevel::kError);
+  command_line.verbose = true;
+  EXPECT_EQ(make_serve_options(command_line).options.log_level, LogLevel::kDebug);
+  command_line.quiet = false;
+  EXPECT_EQ(make_serve_options(command_line).options.log_level, LogLevel::kDebug);
+}
+
+TEST(ServeOptions, StageAndGazeboAreRefused) {
+  auto command_line = config_only();
+  command_line.stage_directory = "/tmp/stage";
+  EXPECT_EQ(usage_error(command_line),
+            "Stage (-s) is not available: playerkit serves real and logged devices only");
+  command_line = config_only();
+  command_line.gazebo_id = "default";
+  EXPECT_EQ(usage_error(command_line),
+            "Gazebo (-g) is not available: playerkit serves real and logged devices only");
+}
+
+TEST(ServeOptions, OnlyTcpTransport) {
+  auto command_line = config_only();
+  command_line.transport = "udp";
+  EXPECT_EQ(usage_error(command_line), "transport 'udp' is not available: playerkit serves clients over TCP only");
+}
+
+TEST(ServeOptions, ReplaySpeedMustBeAboveZeroAndBelowAMillion) {
+  auto command_line = config_only();
+  command_line.readlog = "run.log";
+  command_line.readlog_speed = 0;
+  EXPECT_EQ(usage_error(command_line), "-f 0: the replay speed must be above 0 and below 1000000");
+  command_line.readlog_speed = -1.5;
+  EXPECT_EQ(usage_error(command_line), "-f -1.5: the replay speed must be above 0 and below 1000000");
+  command_line.readlog_speed = 1e6;
+  EXPECT_EQ(usage_error(command_line), "-f 1e+06: the replay speed must be above 0 and below 1000000");
+  command_line.readlog_speed = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(usage_error(command_line), "");
+  command_line.readlog_speed = 999999;
+  EXPECT_EQ(usage_error(command_line), "");
+}
+
+}  // namespace serve_options_test
