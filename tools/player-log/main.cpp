@@ -8,6 +8,7 @@
 #include "log/log_parse_error.hpp"
 #include "log_convert.hpp"
 #include "log_info.hpp"
+#include "log_options.hpp"
 #include "log_record.hpp"
 #include "log_replay.hpp"
 #include "log_tool.hpp"
@@ -73,62 +74,57 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("player-log (playerkit) ") + PLAYERKIT_VERSION);
   app.require_subcommand(1);
 
-  bool strict = false;
-  std::string devices;
-
   auto* info = app.add_subcommand("info", "format, devices with counts and rates, time span, gaps, malformed lines");
   std::string info_file;
   bool json = false;
+  bool info_strict = false;
   info->add_option("FILE", info_file, "the log")->required();
   info->add_flag("--json", json, "one JSON object instead of text");
-  info->add_flag("--strict", strict, "a malformed line is an error (exit 1)");
+  info->add_flag("--strict", info_strict, "a malformed line is an error (exit 1)");
 
   auto* convert = app.add_subcommand("convert", "Player <-> CARMEN, or to JSON lines / CSV");
-  plog::ConvertOptions convert_options;
-  std::string to;
-  convert->add_option("IN", convert_options.input, "the log to read")->required();
-  convert->add_option("-o,--output", convert_options.output, "where to write (- for stdout)")->required();
-  convert->add_option("--to", to,
+  plog::ConvertCommandLine convert_line;
+  convert->add_option("IN", convert_line.input, "the log to read")->required();
+  convert->add_option("-o,--output", convert_line.output, "where to write (- for stdout)")->required();
+  convert->add_option("--to", convert_line.to,
                       "player, carmen, jsonl or csv (default: by -o's extension, else the other log format)");
-  convert->add_option("--devices", devices, "only these devices: laser:0,position:0");
-  convert->add_flag("--si", convert_options.si, "jsonl/csv: metres and radians instead of wire units");
-  convert->add_flag("--strict", strict, "a malformed line is an error (exit 1)");
+  convert->add_option("--devices", convert_line.devices, "only these devices: laser:0,position:0");
+  convert->add_flag("--si", convert_line.si, "jsonl/csv: metres and radians instead of wire units");
+  convert->add_flag("--strict", convert_line.strict, "a malformed line is an error (exit 1)");
 
   auto* cut = app.add_subcommand("cut", "a time window and/or some devices of a Player log");
-  plog::CutOptions cut_options;
-  cut->add_option("FILE", cut_options.input, "the Player log")->required();
-  cut->add_option("-o,--output", cut_options.output, "where to write (- for stdout)")->required();
-  cut->add_option("--start", cut_options.start, "from S seconds after the log's first time")->type_name("S");
-  cut->add_option("--end", cut_options.end, "up to S seconds after the log's first time")->type_name("S");
-  cut->add_option("--devices", devices, "only these devices: laser:0,position:0 (sync lines stay)");
-  cut->add_flag("--strict", strict, "a malformed line is an error (exit 1)");
+  plog::CutCommandLine cut_line;
+  cut->add_option("FILE", cut_line.input, "the Player log")->required();
+  cut->add_option("-o,--output", cut_line.output, "where to write (- for stdout)")->required();
+  cut->add_option("--start", cut_line.start, "from S seconds after the log's first time")->type_name("S");
+  cut->add_option("--end", cut_line.end, "up to S seconds after the log's first time")->type_name("S");
+  cut->add_option("--devices", cut_line.devices, "only these devices: laser:0,position:0 (sync lines stay)");
+  cut->add_flag("--strict", cut_line.strict, "a malformed line is an error (exit 1)");
 
   auto* record = app.add_subcommand("record", "record devices of a server (or player-cat --format log on stdin)");
-  plog::RecordOptions record_options;
-  std::vector<std::string> targets;
-  record->add_option("TARGETS", targets, "[HOST[:PORT]] DEVICE..., or - to read log lines from stdin")
+  plog::RecordCommandLine record_line;
+  record->add_option("TARGETS", record_line.targets, "[HOST[:PORT]] DEVICE..., or - to read log lines from stdin")
       ->required();
-  record->add_option("-o,--output", record_options.output, "the log to write (- for stdout)")->required();
-  record->add_option("--duration", record_options.duration, "stop after S seconds")->type_name("S");
-  record->add_option("-n,--count", record_options.count, "stop after N data messages")->type_name("N");
-  record->add_option("--timeout", record_options.timeout, "seconds to wait for the connection and each reply")
+  record->add_option("-o,--output", record_line.output, "the log to write (- for stdout)")->required();
+  record->add_option("--duration", record_line.duration, "stop after S seconds")->type_name("S");
+  record->add_option("-n,--count", record_line.count, "stop after N data messages")->type_name("N");
+  record->add_option("--timeout", record_line.timeout, "seconds to wait for the connection and each reply")
       ->capture_default_str();
-  record->add_flag("--strict", strict, "stdin: a malformed line is an error (exit 1)");
+  record->add_flag("--strict", record_line.strict, "stdin: a malformed line is an error (exit 1)");
 
   auto* replay = app.add_subcommand("replay", "serve a log's devices to clients, as player-serve -r does, without a config");
-  plog::ReplayOptions replay_options;
-  bool replay_quiet = false;
-  replay->add_option("FILE", replay_options.input, "Player or CARMEN log (.gz too)")->required();
-  replay->add_option("-p,--port", replay_options.port, "TCP port (0: any free one)")->capture_default_str();
-  replay->add_option("--bind", replay_options.bind_address, "address to listen on")->capture_default_str();
-  replay->add_option("-r,--rate", replay_options.rate, "speed factor (2 = twice as fast as logged)")
+  plog::ReplayCommandLine replay_line;
+  replay->add_option("FILE", replay_line.input, "Player or CARMEN log (.gz too)")->required();
+  replay->add_option("-p,--port", replay_line.port, "TCP port (0: any free one)")->capture_default_str();
+  replay->add_option("--bind", replay_line.bind_address, "address to listen on")->capture_default_str();
+  replay->add_option("-r,--rate", replay_line.rate, "speed factor (2 = twice as fast as logged)")
       ->capture_default_str();
-  replay->add_flag("-l,--loop", replay_options.loop, "start again at the end of the log");
-  replay->add_option("--start", replay_options.start, "skip the first S seconds of the log")->type_name("S");
-  replay->add_option("--duration", replay_options.duration, "serve S seconds of log (per pass)")->type_name("S");
-  replay->add_option("--devices", devices, "only these, e.g. laser:0,position:0");
-  replay->add_flag("--burst", replay_options.burst, "as fast as the clients read, never dropping a message");
-  replay->add_flag("-q,--quiet", replay_quiet, "errors only");
+  replay->add_flag("-l,--loop", replay_line.loop, "start again at the end of the log");
+  replay->add_option("--start", replay_line.start, "skip the first S seconds of the log")->type_name("S");
+  replay->add_option("--duration", replay_line.duration, "serve S seconds of log (per pass)")->type_name("S");
+  replay->add_option("--devices", replay_line.devices, "only these, e.g. laser:0,position:0");
+  replay->add_flag("--burst", replay_line.burst, "as fast as the clients read, never dropping a message");
+  replay->add_flag("-q,--quiet", replay_line.quiet, "errors only");
 
   try {
     app.parse(argc, argv);
@@ -139,50 +135,27 @@ int main(int argc, char** argv) {
   plog::Progress progress(std::cerr, isatty(STDERR_FILENO) == 1);
   if (info->parsed()) {
     return guarded([&] {
-      const auto summary = plog::summarize_log(info_file, strict, progress);
+      const auto summary = plog::summarize_log(info_file, info_strict, progress);
       if (json) std::cout << plog::summary_json(summary).dump(2) << "\n";
       else plog::print_summary(summary, std::cout);
       for (const auto& text : summary.malformed_texts) std::cerr << text << "\n";
     });
   }
   if (convert->parsed()) {
-    return guarded([&] {
-      convert_options.strict = strict;
-      if (!to.empty()) convert_options.to = plog::parse_convert_target(to);
-      if (!devices.empty()) convert_options.devices = plog::parse_device_list(devices);
-      plog::run_convert(convert_options, std::cout, std::cerr, progress);
-    });
+    return guarded([&] { plog::run_convert(plog::make_convert_options(convert_line), std::cout, std::cerr, progress); });
   }
   if (cut->parsed()) {
-    return guarded([&] {
-      cut_options.strict = strict;
-      if (!devices.empty()) cut_options.devices = plog::parse_device_list(devices);
-      if (cut_options.start && cut_options.end && *cut_options.end < *cut_options.start) {
-        throw plog::UsageError("--end is before --start");
-      }
-      plog::run_cut(cut_options, std::cout, std::cerr, progress);
-    });
+    return guarded([&] { plog::run_cut(plog::make_cut_options(cut_line), std::cout, std::cerr, progress); });
   }
   if (replay->parsed()) {
     int status = plog::kExitUsage;
-    const int parsed = guarded([&] {
-      if (!devices.empty()) replay_options.devices = plog::parse_device_list(devices);
-      if (!(replay_options.rate > 0 && replay_options.rate < 1e6)) {
-        throw plog::UsageError("--rate must be above 0 and below 1000000");
-      }
-      if (replay_options.start < 0) throw plog::UsageError("--start must be 0 or more");
-      if (replay_options.duration && *replay_options.duration <= 0) throw plog::UsageError("--duration must be > 0");
-      if (replay_quiet) replay_options.log_level = playerkit::core::LogLevel::kError;
-      status = plog::run_replay(replay_options, std::cerr, progress);
-    });
+    const int parsed =
+        guarded([&] { status = plog::run_replay(plog::make_replay_options(replay_line), std::cerr, progress); });
     return parsed == plog::kExitOk ? status : parsed;
   }
   int status = plog::kExitUsage;
   const int parsed = guarded([&] {
-    record_options.strict = strict;
-    plog::parse_record_targets(targets, record_options);
-    if (record_options.duration && *record_options.duration <= 0) throw plog::UsageError("--duration must be > 0");
-    if (record_options.timeout <= 0) throw plog::UsageError("--timeout must be > 0");
+    const auto record_options = plog::make_record_options(record_line);
     playerkit::tools::install_stop_signals();
     status = plog::run_record(record_options, std::cin, std::cout, std::cerr,
                               [] { return playerkit::tools::stop_requested(); });
