@@ -41,7 +41,11 @@ Command Command::with_string(std::uint8_t number, std::string text) {
 }
 
 std::vector<std::uint8_t> encode_command(const Command& command) {
-  std::vector<std::uint8_t> payload{command.number};
+  // Sized once: besides saving reallocations, this keeps GCC 12 at -O3 from
+  // reporting the growth-then-copy below as out of bounds (a false positive).
+  std::vector<std::uint8_t> payload;
+  payload.reserve(4 + command.text.size());
+  payload.push_back(command.number);
   switch (command.form) {
     case ArgumentForm::none:
       break;
