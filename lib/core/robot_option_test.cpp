@@ -24,7 +24,7 @@ struct RobotOptionFixture : ::testing::Test {
                                 "",    table,
                                 clock, logger,
                                 table.connections()};
-    return robot_option(context, {"p2os_position", "p2os_sonar"}, "port", "/dev/ttyS0");
+    return robot_option(context, {"p2os_position", "p2os_sonar"}, "port", "/tmp/default-port");
   }
   std::optional<config::ConfigFile> file;
   DeviceTable table;
@@ -34,43 +34,43 @@ struct RobotOptionFixture : ::testing::Test {
 
 TEST_F(RobotOptionFixture, APortWrittenOnOneDeviceServesTheWholeRobot) {
   load("position:0 ( driver \"p2os_position\" )\n"
-       "sonar:0 ( driver \"p2os_sonar\" port \"/dev/ttyUSB0\" )\n");
-  EXPECT_EQ(port_for(0).value, "/dev/ttyUSB0");
+       "sonar:0 ( driver \"p2os_sonar\" port \"/tmp/robot-usb\" )\n");
+  EXPECT_EQ(port_for(0).value, "/tmp/robot-usb");
   EXPECT_TRUE(port_for(0).given);
-  EXPECT_EQ(port_for(1).value, "/dev/ttyUSB0");
+  EXPECT_EQ(port_for(1).value, "/tmp/robot-usb");
 }
 
 TEST_F(RobotOptionFixture, NoPortAnywhereGivesTheFallback) {
   load("position:0 ( driver \"p2os_position\" )\n");
-  EXPECT_EQ(port_for(0).value, "/dev/ttyS0");
+  EXPECT_EQ(port_for(0).value, "/tmp/default-port");
   EXPECT_FALSE(port_for(0).given);
 }
 
 TEST_F(RobotOptionFixture, RobotsOnOtherServerPortsAndOtherFamiliesAreSeparate) {
-  load("position:0 ( driver \"p2os_position\" port \"/dev/ttyS1\" )\n"
-       "laser:0 ( driver \"sicklms200\" port \"/dev/ttyS2\" )\n"
-       "robot:6666 ( position:0 ( driver \"p2os_position\" port \"/dev/ttyS3\" ) )\n");
-  EXPECT_EQ(port_for(0).value, "/dev/ttyS1");
-  EXPECT_EQ(port_for(2).value, "/dev/ttyS3");
+  load("position:0 ( driver \"p2os_position\" port \"/tmp/robot-1\" )\n"
+       "laser:0 ( driver \"sicklms200\" port \"/tmp/laser-2\" )\n"
+       "robot:6666 ( position:0 ( driver \"p2os_position\" port \"/tmp/robot-3\" ) )\n");
+  EXPECT_EQ(port_for(0).value, "/tmp/robot-1");
+  EXPECT_EQ(port_for(2).value, "/tmp/robot-3");
 }
 
 TEST_F(RobotOptionFixture, TwoDifferentPortsForOneRobotAreAnErrorAtTheSecond) {
-  load("position:0 ( driver \"p2os_position\" port \"/dev/ttyS0\" )\n"
-       "sonar:0 ( driver \"p2os_sonar\" port \"/dev/ttyS1\" )\n");
+  load("position:0 ( driver \"p2os_position\" port \"/tmp/robot-0\" )\n"
+       "sonar:0 ( driver \"p2os_sonar\" port \"/tmp/robot-1\" )\n");
   try {
     (void)port_for(0);
     FAIL() << "expected a ConfigError";
   } catch (const config::ConfigError& error) {
     EXPECT_EQ(error.where().line, 2);
-    EXPECT_NE(error.message().find("differs from \"/dev/ttyS0\" given at robot.cfg:1:"), std::string::npos)
+    EXPECT_NE(error.message().find("differs from \"/tmp/robot-0\" given at robot.cfg:1:"), std::string::npos)
         << error.what();
   }
 }
 
 TEST_F(RobotOptionFixture, TheSameValueTwiceIsFine) {
-  load("position:0 ( driver \"p2os_position\" port \"/dev/ttyS0\" )\n"
-       "sonar:0 ( driver \"p2os_sonar\" port \"/dev/ttyS0\" )\n");
-  EXPECT_EQ(port_for(1).value, "/dev/ttyS0");
+  load("position:0 ( driver \"p2os_position\" port \"/tmp/robot-0\" )\n"
+       "sonar:0 ( driver \"p2os_sonar\" port \"/tmp/robot-0\" )\n");
+  EXPECT_EQ(port_for(1).value, "/tmp/robot-0");
 }
 
 }  // namespace robot_option_test

@@ -20,7 +20,7 @@ class RecordingConnection : public SharedConnection {
  protected:
   void open() override {
     events_.push_back("open");
-    if (refuse_) throw DriverError("no robot on /dev/ttyS0");
+    if (refuse_) throw DriverError("no robot on /tmp/robot-a");
   }
   void close() noexcept override {
     events_.push_back("stop motors");
@@ -78,9 +78,9 @@ TEST(ConnectionPool, OneConnectionPerKey) {
     ++made;
     return std::make_shared<RecordingConnection>(events);
   };
-  auto a = pool.get<RecordingConnection>("p2os /dev/ttyS0", make);
-  auto b = pool.get<RecordingConnection>("p2os /dev/ttyS0", make);
-  auto c = pool.get<RecordingConnection>("p2os /dev/ttyS1", make);
+  auto a = pool.get<RecordingConnection>("p2os /tmp/robot-a", make);
+  auto b = pool.get<RecordingConnection>("p2os /tmp/robot-a", make);
+  auto c = pool.get<RecordingConnection>("p2os /tmp/robot-b", make);
   EXPECT_EQ(a, b);
   EXPECT_NE(a, c);
   EXPECT_EQ(made, 2);
@@ -95,8 +95,8 @@ class OtherConnection : public SharedConnection {
 TEST(ConnectionPool, AKeyClaimedByAnotherKindIsAnError) {
   std::vector<std::string> events;
   ConnectionPool pool;
-  (void)pool.get<RecordingConnection>("/dev/ttyS0", [&] { return std::make_shared<RecordingConnection>(events); });
-  EXPECT_THROW((void)pool.get<OtherConnection>("/dev/ttyS0", [] { return std::make_shared<OtherConnection>(); }),
+  (void)pool.get<RecordingConnection>("/tmp/robot-a", [&] { return std::make_shared<RecordingConnection>(events); });
+  EXPECT_THROW((void)pool.get<OtherConnection>("/tmp/robot-a", [] { return std::make_shared<OtherConnection>(); }),
                std::logic_error);
 }
 
