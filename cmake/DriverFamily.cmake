@@ -8,7 +8,7 @@
 # out (Player 1.5's configure had --disable-<family>), so that one family's
 # missing dependency never breaks the others. SPECS names the family's
 # `core::DriverSpec f()` functions (namespace playerkit::drivers); the list of
-# built-in drivers is generated from the families built (builtin.cpp).
+# built-in drivers is generated from the families built (builtin_drivers.cpp.in).
 # TEST_NEEDS: families whose drivers this family's tests use (amcl's tests
 # replay logs through readlog); without them the tests are not built.
 # TEST_LIBS: more libraries for the tests only (the emulators).
@@ -77,7 +77,7 @@ function(playerkit_builtin_drivers)
   set(PLAYERKIT_BUILTIN_REGISTRATIONS "${registrations}")
   configure_file(${CMAKE_CURRENT_SOURCE_DIR}/builtin_drivers.cpp.in
                  ${CMAKE_CURRENT_BINARY_DIR}/builtin_drivers.cpp @ONLY)
-  add_library(playerkit_drivers builtin.cpp ${CMAKE_CURRENT_BINARY_DIR}/builtin_drivers.cpp)
+  add_library(playerkit_drivers ${CMAKE_CURRENT_BINARY_DIR}/builtin_drivers.cpp)
   target_include_directories(playerkit_drivers PUBLIC ${PROJECT_SOURCE_DIR}/lib)
   list(TRANSFORM families PREPEND playerkit_drivers_ OUTPUT_VARIABLE family_targets)
   target_link_libraries(playerkit_drivers PUBLIC playerkit_core ${family_targets} PRIVATE playerkit_warnings)
