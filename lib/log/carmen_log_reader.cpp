@@ -21,6 +21,18 @@ void CarmenLogReader::count_unknown(const std::string& keyword) {
   }
 }
 
+void CarmenLogReader::retime(CarmenRecord& record, std::size_t ordinal) const {
+  if (!options_.clock) return;
+  const auto time = options_.clock->replacement(ordinal);
+  if (!time) return;
+  std::visit(
+      [&](auto& r) {
+        r.stamp.ipc_timestamp = *time;
+        r.stamp.logger_timestamp = *time;
+      },
+      record);
+}
+
 std::optional<CarmenRecord> CarmenLogReader::next() {
   while (std::getline(in_, line_)) {
     ++line_number_;
@@ -35,7 +47,10 @@ std::optional<CarmenRecord> CarmenLogReader::next() {
       if (options_.strict) throw;
       continue;
     }
-    if (auto* record = std::get_if<CarmenRecord>(&parsed)) return std::move(*record);
+    if (auto* record = std::get_if<CarmenRecord>(&parsed)) {
+      if (!std::holds_alternative<CarmenParam>(*record)) retime(*record, timed_records_++);
+      return std::move(*record);
+    }
     if (auto* unknown = std::get_if<CarmenUnknownLine>(&parsed)) {
       count_unknown(unknown->keyword);
     } else {

@@ -17,11 +17,13 @@
 #include <cstddef>
 #include <istream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "log/carmen_log.hpp"
+#include "log/log_clock.hpp"
 #include "log/log_parse_error.hpp"
 
 namespace playerkit::log {
@@ -29,6 +31,9 @@ namespace playerkit::log {
 struct CarmenReadOptions {
   bool strict = false;  // a malformed line throws instead of being skipped
   std::size_t kept_messages = 10;  // how many malformed-line messages to keep
+  // The log's clock (log_clock_reader.hpp: audit_log_times): records whose
+  // time it replaces get the replacement as ipc and logger timestamp.
+  std::shared_ptr<const LogClock> clock = nullptr;
 };
 
 class CarmenLogReader {
@@ -47,6 +52,8 @@ class CarmenLogReader {
   const std::map<std::string, std::size_t>& unknown_keywords() const { return unknown_keywords_; }
   std::size_t unknown_lines() const { return unknown_lines_; }
   std::size_t malformed_lines() const { return malformed_lines_; }
+  // Records but PARAM returned so far (the LogClock's ordinals).
+  std::size_t timed_records() const { return timed_records_; }
   // The first kept_messages "file:line:col: message" texts of malformed lines.
   const std::vector<std::string>& malformed_messages() const { return malformed_messages_; }
 
@@ -54,6 +61,7 @@ class CarmenLogReader {
 
  private:
   void count_unknown(const std::string& keyword);
+  void retime(CarmenRecord& record, std::size_t ordinal) const;
 
   std::istream& in_;
   std::string file_;
@@ -63,6 +71,7 @@ class CarmenLogReader {
   std::size_t comment_lines_ = 0;
   std::size_t unknown_lines_ = 0;
   std::size_t malformed_lines_ = 0;
+  std::size_t timed_records_ = 0;
   std::map<std::string, std::size_t> unknown_keywords_;
   std::vector<std::string> malformed_messages_;
 };

@@ -309,11 +309,35 @@ std::optional<std::variant<SyncLine, DataLine>> TextLogReader::next() {
       if (malformed_lines_.size() < options_.kept_errors) malformed_lines_.emplace_back(error.what());
       continue;
     }
-    if (auto* sync = std::get_if<SyncLine>(&line)) return std::move(*sync);
-    if (auto* data = std::get_if<DataLine>(&line)) return std::move(*data);
+    std::optional<std::variant<SyncLine, DataLine>> timed;
+    if (auto* sync = std::get_if<SyncLine>(&line)) timed = std::move(*sync);
+    if (auto* data = std::get_if<DataLine>(&line)) timed = std::move(*data);
+    if (timed) {
+      retime(*timed, timed_lines_++);
+      return timed;
+    }
     if (auto* header = std::get_if<HeaderLine>(&line)) take_header(*header);
   }
   return std::nullopt;
+}
+
+void TextLogReader::retime(std::variant<SyncLine, DataLine>& line, std::size_t ordinal) const {
+  if (!options_.clock) return;
+  const auto seconds = options_.clock->replacement(ordinal);
+  if (!seconds) return;
+  const auto time = protocol::Timestamp::from_seconds(*seconds);
+  if (auto* sync = std::get_if<SyncLine>(&line)) {
+    sync->server_time = time;
+    sync->data_time = time;
+    return;
+  }
+  auto& data = std::get<DataLine>(line);
+  data.server_time = time;
+  data.data_time = time;
+  data.message.header.time_sec = time.sec;
+  data.message.header.time_usec = time.usec;
+  data.message.header.timestamp_sec = time.sec;
+  data.message.header.timestamp_usec = time.usec;
 }
 
 void TextLogReader::take_header(const HeaderLine& header) {

@@ -34,12 +34,14 @@
 
 #include <cstdint>
 #include <istream>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
 #include <vector>
 
+#include "log/log_clock.hpp"
 #include "log/log_parse_error.hpp"
 #include "log/text_log_format.hpp"
 #include "protocol/device_address.hpp"
@@ -96,6 +98,10 @@ struct TextLogReaderOptions {
   bool strict = false;
   // How many skipped lines keep their error text (the count goes on past it).
   std::size_t kept_errors = 10;
+  // The log's clock (log_clock_reader.hpp: audit_log_times): lines whose time
+  // it replaces get the replacement as token 0 and data time (and in the
+  // message's header).
+  std::shared_ptr<const LogClock> clock = nullptr;
 };
 
 // A whole log, line by line, in constant memory. The header's file version
@@ -122,14 +128,18 @@ class TextLogReader {
   const std::optional<std::string>& file_version() const { return file_version_; }
   // The number of the line read last (1-based; 0 before the first).
   int line_number() const { return line_number_; }
+  // Sync and data lines returned so far (the LogClock's ordinals).
+  std::size_t timed_lines() const { return timed_lines_; }
 
  private:
   void take_header(const HeaderLine& header);
+  void retime(std::variant<SyncLine, DataLine>& line, std::size_t ordinal) const;
 
   std::istream& in_;
   std::string file_;
   TextLogReaderOptions options_;
   int line_number_ = 0;
+  std::size_t timed_lines_ = 0;
   LogFormatVersion format_version_ = LogFormatVersion::k0_0_0;
   std::size_t malformed_count_ = 0;
   std::vector<std::string> malformed_lines_;
