@@ -70,7 +70,7 @@ constexpr BrokenFile kBrokenFiles[] = {
     {"broken-robot-port.cfg",
      "{file}:1:1: invalid port 'bob' in 'robot:bob' (expected a number from 1 to 65535)"},
     {"broken-include-missing.cfg",
-     "{file}:2:9: cannot open include file 'includes/no-such-file.cfg' (looked for "
+     "{file}:2:9: cannot read include file 'includes/no-such-file.cfg': no such file (looked for "
      "{data}/includes/no-such-file.cfg)"},
     {"broken-include-cycle.cfg",
      "{data}/includes/back-to-broken.cfg:2:9: include cycle: broken-include-cycle.cfg -> "

@@ -10,13 +10,14 @@
 #include "config/includes.hpp"
 #include "config/parser.hpp"
 #include "config/section_type.hpp"
+#include "text/printable.hpp"
 
 namespace playerkit::config {
 namespace {
 
 std::string unknown_driver_message(const std::string& driver, const DeviceType& device,
                                    bool is_default, const LoadOptions& options) {
-  std::string message = "unknown driver '" + driver + "' for " +
+  std::string message = "unknown driver '" + text::excerpt(driver) + "' for " +
                         std::string(device.interface->name) + ":" + std::to_string(device.index);
   if (is_default) {
     message += " (the default driver of '" + std::string(device.interface->name) + "')";
@@ -36,13 +37,17 @@ std::string unknown_driver_message(const std::string& driver, const DeviceType& 
 }  // namespace
 
 std::string Warning::to_string() const {
-  return config::to_string(where) + ": warning: " + message;
+  return text::printable(config::to_string(where) + ": warning: " + message);
 }
 
 ConfigFile ConfigFile::load(const std::filesystem::path& path, const LoadOptions& options) {
-  const auto text = read_text_file(path);
-  if (!text) throw ConfigError(SourceLocation{path.string()}, "cannot open config file");
-  return parse(*text, path.string(), options);
+  std::string text;
+  try {
+    text = read_config_text(path);
+  } catch (const UnreadableConfigFile& error) {
+    throw ConfigError(SourceLocation{path.string()}, std::string("cannot read config file: ") + error.what());
+  }
+  return parse(text, path.string(), options);
 }
 
 ConfigFile ConfigFile::parse(std::string_view text, std::string filename,

@@ -247,7 +247,7 @@ TEST(ConfigFile, LoadReadsTheFile) {
 
 TEST(ConfigFile, LoadOfAMissingFileNamesIt) {
   const std::string path = data_path("no-such-file.cfg");
-  EXPECT_EQ(error_of([&] { (void)ConfigFile::load(path); }), path + ": cannot open config file");
+  EXPECT_EQ(error_of([&] { (void)ConfigFile::load(path); }), path + ": cannot read config file: no such file");
 }
 
 TEST(ConfigFile, ParseResolvesIncludesAgainstTheGivenName) {

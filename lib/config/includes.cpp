@@ -1,11 +1,16 @@
 #include "config/includes.hpp"
 
-#include <fstream>
-#include <iterator>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <system_error>
 
 #include "config/errors.hpp"
 #include "config/lexer.hpp"
+#include "text/printable.hpp"
 
 namespace playerkit::config {
 namespace {
@@ -34,6 +39,11 @@ struct OpenFile {
 class IncludeExpander {
  public:
   std::vector<Token> expand(std::string_view text, const std::string& file) {
+    if (text.size() > kMaxConfigBytes) {
+      throw ConfigError(SourceLocation{file}, "the configuration is larger than " +
+                                                  std::to_string(kMaxConfigBytes) + " bytes");
+    }
+    bytes_read_ = text.size();
     open_files_.push_back(OpenFile{identity_of(file), fs::path(file).filename().string()});
     append_tokens(text, file);
     tokens_.push_back(Token{TokenKind::EndOfFile, "", end_of_main_file_});
@@ -59,7 +69,7 @@ class IncludeExpander {
         const Token& after = tokens[i + 2];
         if (after.kind != TokenKind::Newline && after.kind != TokenKind::EndOfFile) {
           throw ConfigError(after.where, "syntax error: expected end of line after include \"" +
-                                             name.text + "\", found " + describe(after));
+                                             text::excerpt(name.text) + "\", found " + describe(after));
         }
         include(name, file);
         ++i;  // skip the name; the line break stays to end the line as usual
@@ -71,6 +81,7 @@ class IncludeExpander {
 
   void include(const Token& name, const std::string& including_file) {
     const fs::path path = resolve_include(name.text, including_file);
+    const std::string shown = "include file '" + text::excerpt(name.text) + "'";
     OpenFile opened{identity_of(path), path.filename().string()};
     for (const OpenFile& open : open_files_) {
       if (open.identity == opened.identity) {
@@ -79,18 +90,31 @@ class IncludeExpander {
         throw ConfigError(name.where, "include cycle: " + chain + opened.short_name);
       }
     }
-    const auto text = read_text_file(path);
-    if (!text) {
-      throw ConfigError(name.where, "cannot open include file '" + name.text + "' (looked for " +
+    if (open_files_.size() > static_cast<std::size_t>(kMaxIncludeDepth)) {
+      throw ConfigError(name.where, shown + ": includes nested more than " +
+                                        std::to_string(kMaxIncludeDepth) + " deep");
+    }
+    if (++included_files_ > kMaxIncludedFiles) {
+      throw ConfigError(name.where, shown + ": more than " + std::to_string(kMaxIncludedFiles) +
+                                        " includes in one configuration");
+    }
+    std::string text;
+    try {
+      text = read_config_text(path, kMaxConfigBytes - bytes_read_);
+    } catch (const UnreadableConfigFile& error) {
+      throw ConfigError(name.where, "cannot read " + shown + ": " + error.what() + " (looked for " +
                                         path.string() + ")");
     }
+    bytes_read_ += text.size();
     open_files_.push_back(std::move(opened));
-    append_tokens(*text, path.string());
+    append_tokens(text, path.string());
     open_files_.pop_back();
   }
 
   std::vector<Token> tokens_;
   std::vector<OpenFile> open_files_;  // the include chain being read, outermost first
+  std::size_t bytes_read_ = 0;         // of every file so far, for kMaxConfigBytes
+  int included_files_ = 0;
   SourceLocation end_of_main_file_;
 };
 
@@ -100,14 +124,49 @@ std::vector<Token> tokenize_with_includes(std::string_view text, const std::stri
   return IncludeExpander().expand(text, file);
 }
 
-std::optional<std::string> read_text_file(const std::filesystem::path& path) {
-  std::error_code error;
-  if (fs::is_directory(path, error)) return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) return std::nullopt;
+std::string read_config_text(const fs::path& path, std::size_t max_bytes) {
+  // Opened without waiting (a pipe would block until a writer came) and
+  // checked on the descriptor, so what is read is what was checked.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) {
+    if (errno == ENOENT) throw UnreadableConfigFile("no such file");
+    throw UnreadableConfigFile(std::strerror(errno));
+  }
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat status {};
+  if (::fstat(fd, &status) != 0) throw UnreadableConfigFile(std::strerror(errno));
+  if (S_ISDIR(status.st_mode)) throw UnreadableConfigFile("it is a directory, not a file");
+  if (!S_ISREG(status.st_mode)) {
+    throw UnreadableConfigFile("it is not a regular file (a device, a pipe or a socket)");
+  }
+  const auto too_large = [] {
+    return UnreadableConfigFile("too large: a configuration with its includes may have " +
+                                std::to_string(kMaxConfigBytes) + " bytes at most");
+  };
+  if (static_cast<std::uintmax_t>(status.st_size) > max_bytes) throw too_large();
+  std::string text;
+  char block[16384];
+  for (;;) {
+    const ssize_t count = ::read(fd, block, sizeof block);
+    if (count < 0 && errno == EINTR) continue;
+    if (count < 0) throw UnreadableConfigFile(std::strerror(errno));
+    if (count == 0) break;
+    // The file may have grown since fstat.
+    if (text.size() + static_cast<std::size_t>(count) > max_bytes) throw too_large();
+    text.append(block, static_cast<std::size_t>(count));
+  }
   return text;
+}
+
+std::optional<std::string> read_text_file(const std::filesystem::path& path) {
+  try {
+    return read_config_text(path);
+  } catch (const UnreadableConfigFile&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace playerkit::config

@@ -86,7 +86,7 @@ TEST(Includes, RelativeToTheDirectoryOfTheGivenName) {
 TEST(Includes, MissingFileIsReportedAtTheFileName) {
   const std::string file = data_path("includes/missing.cfg");
   EXPECT_EQ(error_of([&] { (void)tokens_of_file(file); }),
-            file + ":2:11: cannot open include file 'nothere.cfg' (looked for " +
+            file + ":2:11: cannot read include file 'nothere.cfg': no such file (looked for " +
                 data_path("includes/nothere.cfg") + ")");
 }
 

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "config/errors.hpp"
+#include "config/limits.hpp"
 
 namespace playerkit::config {
 namespace {
@@ -31,6 +32,7 @@ class Lexer {
   Lexer(std::string_view text, const std::string& file) : text_(text), file_(file) {}
 
   std::vector<Token> run() {
+    refuse_long_lines();
     std::vector<Token> tokens;
     while (!at_end()) {
       const char c = peek();
@@ -66,6 +68,22 @@ class Lexer {
   }
 
  private:
+  // Before any token: a line over the limit is reported first, wherever it is.
+  void refuse_long_lines() const {
+    int line = 1;
+    std::size_t start = 0;
+    for (std::size_t i = 0; i <= text_.size(); ++i) {
+      if (i < text_.size() && !is_line_break(text_[i])) continue;
+      if (i - start > kMaxConfigLineBytes) {
+        throw ConfigError(SourceLocation{file_, line, static_cast<int>(kMaxConfigLineBytes) + 1},
+                          "line longer than " + std::to_string(kMaxConfigLineBytes) + " bytes");
+      }
+      if (i + 1 < text_.size() && text_[i] == '\r' && text_[i + 1] == '\n') ++i;
+      ++line;
+      start = i + 1;
+    }
+  }
+
   bool at_end() const { return pos_ >= text_.size(); }
   char peek() const { return text_[pos_]; }
   void advance() {

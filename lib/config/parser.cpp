@@ -4,6 +4,8 @@
 #include <utility>
 
 #include "config/errors.hpp"
+#include "config/limits.hpp"
+#include "text/printable.hpp"
 #include "config/includes.hpp"
 
 namespace playerkit::config {
@@ -22,7 +24,15 @@ struct Macro {
   std::string name;
   SourceLocation where;
   SectionTree body;  // its type is the type the macro stands for
+  std::size_t items = 0;  // sections and property values in body, for kMaxConfigItems
+  int height = 1;         // levels of sections in body, for kMaxSectionDepth
 };
+
+int height_of(const SectionTree& tree) {
+  int below = 0;
+  for (const SectionTree& child : tree.children) below = std::max(below, height_of(child));
+  return below + 1;
+}
 
 bool starts_value(TokenKind kind) {
   return kind == TokenKind::Number || kind == TokenKind::String || kind == TokenKind::OpenBracket;
@@ -40,7 +50,7 @@ void set_property(std::vector<Property>& properties, Property property) {
 }
 
 std::string quoted_value(const Value& value) {
-  return value.is_string ? "\"" + value.text + "\"" : value.text;
+  return value.is_string ? "\"" + text::excerpt(value.text) + "\"" : text::excerpt(value.text);
 }
 
 void flatten(SectionTree& tree, int parent, std::vector<ParsedSection>& out) {
@@ -116,10 +126,10 @@ class Parser {
     if (after_breaks.kind == TokenKind::OpenParen) return false;
     if (ahead > 1 && starts_value(after_breaks.kind)) {
       throw ConfigError(word.where,
-                        "missing value for '" + word.text +
+                        "missing value for '" + text::excerpt(word.text) +
                             "': a property's value must be on the same line as its name");
     }
-    throw ConfigError(next.where, "syntax error: expected a value or '(' after '" + word.text +
+    throw ConfigError(next.where, "syntax error: expected a value or '(' after '" + text::excerpt(word.text) +
                                       "', found " + describe(next));
   }
 
@@ -132,7 +142,11 @@ class Parser {
   SectionTree parse_section() {
     const Token& word = take();
     SectionTree section;
-    if (const Macro* macro = find_macro(word.text)) {
+    const Macro* macro = find_macro(word.text);
+    // Checked before a macro's body is copied: macros made of macros double
+    // in size at each level, so copying first could exhaust memory.
+    enter_section(word, macro);
+    if (macro != nullptr) {
       section = macro->body;
     } else {
       section.type = word.text;
@@ -140,8 +154,27 @@ class Parser {
     section.where = word.where;
     skip_newlines();
     const Token& open = take();  // word_starts_property() made sure it is '('
-    parse_body(section, open, "section '" + word.text + "'");
+    parse_body(section, open, "section '" + text::excerpt(word.text) + "'");
+    --depth_;
     return section;
+  }
+
+  // Nesting and size limits (limits.hpp): deep nesting would overflow the
+  // stack of this recursive parser, and macro copies multiply memory.
+  void enter_section(const Token& word, const Macro* macro) {
+    if (depth_ + (macro != nullptr ? macro->height : 1) > kMaxSectionDepth) {
+      throw ConfigError(word.where, "sections nested more than " + std::to_string(kMaxSectionDepth) + " deep");
+    }
+    count_items(macro != nullptr ? macro->items : 1, word.where);
+    ++depth_;
+  }
+
+  void count_items(std::size_t count, const SourceLocation& where) {
+    items_ += count;
+    if (items_ > kMaxConfigItems) {
+      throw ConfigError(where, "more than " + std::to_string(kMaxConfigItems) +
+                                   " sections and values once macros are expanded");
+    }
   }
 
   // The items between '(' (already taken) and its ')'.
@@ -162,7 +195,9 @@ class Parser {
             throw ConfigError(token.where, "'define' is only allowed at global level");
           }
           if (word_starts_property()) {
-            set_property(section.properties, parse_property());
+            Property property = parse_property();
+            count_items(property.values.size(), property.where);
+            set_property(section.properties, std::move(property));
           } else {
             section.children.push_back(parse_section());
           }
@@ -195,10 +230,10 @@ class Parser {
           break;
         case TokenKind::Newline:
         case TokenKind::EndOfFile:
-          throw ConfigError(first.where, "unmatched '[': the tuple of '" + name.text +
+          throw ConfigError(first.where, "unmatched '[': the tuple of '" + text::excerpt(name.text) +
                                              "' must end with ']' on the same line");
         default: {
-          const std::string expected = "a number or a string in the tuple of '" + name.text + "'";
+          const std::string expected = "a number or a string in the tuple of '" + text::excerpt(name.text) + "'";
           throw ConfigError(element.where,
                             "syntax error: expected " + expected + ", found " + describe(element));
         }
@@ -216,7 +251,7 @@ class Parser {
         next.where.file == token.where.file && next.where.line == token.where.line &&
         next.where.column == token.where.column + static_cast<int>(token.text.size());
     if (glued_word) {
-      throw ConfigError(token.where, "malformed number '" + token.text + next.text +
+      throw ConfigError(token.where, "malformed number '" + text::excerpt(token.text + next.text) +
                                          "': a number may only contain digits, '.', '+' and '-'");
     }
     return Value{token.text, token.kind == TokenKind::String, token.where};
@@ -226,7 +261,7 @@ class Parser {
     const Token& name = peek();
     const bool is_length = name.text == "unit_length";
     if (!is_length && name.text != "unit_angle") {
-      throw ConfigError(name.where, "property '" + name.text +
+      throw ConfigError(name.where, "property '" + text::excerpt(name.text) +
                                         "' is outside any section (only unit_length and "
                                         "unit_angle may be set at global level)");
     }
@@ -261,32 +296,40 @@ class Parser {
     }
     const Token& base = take();
     if (base.kind != TokenKind::Word) {
-      throw ConfigError(base.where, "syntax error: expected the type of macro '" + name.text +
+      throw ConfigError(base.where, "syntax error: expected the type of macro '" + text::excerpt(name.text) +
                                         "' after its name, found " + describe(base));
     }
     skip_newlines();
     const Token& open = take();
     if (open.kind != TokenKind::OpenParen) {
-      throw ConfigError(open.where, "syntax error: expected '(' after 'define " + name.text + " " +
-                                        base.text + "', found " + describe(open));
+      throw ConfigError(open.where, "syntax error: expected '(' after 'define " + text::excerpt(name.text) + " " +
+                                        text::excerpt(base.text) + "', found " + describe(open));
     }
     if (const Macro* existing = find_macro(name.text)) {
-      throw ConfigError(name.where, "macro '" + name.text + "' is already defined at " +
+      throw ConfigError(name.where, "macro '" + text::excerpt(name.text) + "' is already defined at " +
                                         to_string(existing->where));
     }
     Macro macro{name.text, name.where, {}};
-    if (const Macro* base_macro = find_macro(base.text)) {
+    const std::size_t items_before = items_;
+    const Macro* base_macro = find_macro(base.text);
+    enter_section(base, base_macro);
+    if (base_macro != nullptr) {
       macro.body = base_macro->body;
     } else {
       macro.body.type = base.text;
     }
-    parse_body(macro.body, open, "macro '" + name.text + "'");
+    parse_body(macro.body, open, "macro '" + text::excerpt(name.text) + "'");
+    --depth_;
+    macro.items = items_ - items_before;
+    macro.height = height_of(macro.body);
     macros_.push_back(std::move(macro));
   }
 
   const std::vector<Token>& tokens_;
   std::size_t pos_ = 0;
   std::vector<Macro> macros_;
+  int depth_ = 0;           // sections open around the current token
+  std::size_t items_ = 0;   // sections and property values made so far
   Units units_;
 };
 

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "config/closest_name.hpp"
+#include "text/printable.hpp"
 #include "config/errors.hpp"
 #include "protocol/device_address.hpp"
 
@@ -28,8 +29,8 @@ RobotType parse_robot(std::string_view type, std::string_view rest, const Source
   }
   const auto port = protocol::parse_decimal_u16(port_text);
   if (!port || *port == 0) {
-    throw ConfigError(where, "invalid port '" + std::string(port_text) + "' in '" +
-                                 std::string(type) + "' (expected a number from 1 to 65535)");
+    throw ConfigError(where, "invalid port '" + text::excerpt(port_text) + "' in '" +
+                                 text::excerpt(type) + "' (expected a number from 1 to 65535)");
   }
   RobotType robot{*port, ""};
   if (colon != std::string_view::npos) robot.name = std::string(rest.substr(colon + 1));
@@ -48,7 +49,7 @@ std::variant<RobotType, DeviceType> parse_section_type(std::string_view type,
 
   const protocol::InterfaceInfo* info = protocol::find_interface(head);
   if (info == nullptr) {
-    std::string message = "unknown interface '" + std::string(head) + "'";
+    std::string message = "unknown interface '" + text::excerpt(head) + "'";
     const std::vector<std::string_view> known = declarable_interface_names();
     if (const auto suggestion = closest_name(head, known)) {
       message += " (did you mean '" + *suggestion + "'?)";
@@ -57,14 +58,14 @@ std::variant<RobotType, DeviceType> parse_section_type(std::string_view type,
   }
   if (info->default_driver.empty()) {
     throw ConfigError(where,
-                      "interface '" + std::string(head) + "' cannot be declared in a config file");
+                      "interface '" + text::excerpt(head) + "' cannot be declared in a config file");
   }
   DeviceType device{info, 0};
   if (colon != std::string_view::npos) {
     const auto index = protocol::parse_decimal_u16(rest);
     if (!index) {
-      throw ConfigError(where, "invalid index '" + std::string(rest) + "' in '" +
-                                   std::string(type) + "' (expected a number from 0 to 65535)");
+      throw ConfigError(where, "invalid index '" + text::excerpt(rest) + "' in '" +
+                                   text::excerpt(type) + "' (expected a number from 0 to 65535)");
     }
     device.index = *index;
   }

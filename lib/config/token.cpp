@@ -1,15 +1,17 @@
 #include "config/token.hpp"
 
+#include "text/printable.hpp"
+
 namespace playerkit::config {
 
 std::string describe(const Token& token) {
   switch (token.kind) {
     case TokenKind::Word:
-      return "word '" + token.text + "'";
+      return "word '" + text::excerpt(token.text) + "'";
     case TokenKind::Number:
-      return "number '" + token.text + "'";
+      return "number '" + text::excerpt(token.text) + "'";
     case TokenKind::String:
-      return "string \"" + token.text + "\"";
+      return "string \"" + text::excerpt(token.text) + "\"";
     case TokenKind::OpenParen:
       return "'('";
     case TokenKind::CloseParen:
