@@ -1,5 +1,6 @@
 #include "text/line_reader.hpp"
 
+#include <limits>
 #include <streambuf>
 
 #include "text/printable.hpp"
@@ -30,7 +31,7 @@ bool read_line(std::istream& in, std::string& line, std::string_view name, long 
     extracted = true;
     if (Traits::to_char_type(c) == '\n') break;
     if (line.size() == max_bytes) {
-      in.setstate(state);
+      in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
       throw LineTooLongError(name, number, max_bytes);
     }
     line.push_back(Traits::to_char_type(c));

@@ -3,7 +3,7 @@
 // a small input cost unbounded memory and time: 815 KB of gzip unpack to one
 // 800 MB line. Every reader of line-oriented input (logs, CSV, JSON lines)
 // reads through here; a line over the cap is an error that names the file and
-// line and quotes none of it.
+// line and quotes none of it. Lenient readers may skip it and read on.
 //
 //   std::string line;
 //   for (int number = 1; text::read_line(in, line, "run.log", number); ++number) { ... }
@@ -38,7 +38,8 @@ class LineTooLongError : public std::runtime_error {
 // does (the same stream flags: eof when the last line has no '\n', fail when
 // there was no line). Throws LineTooLongError, naming `name` and `number`
 // (the number of the line being read), when the line has more than max_bytes
-// bytes; the stream is then left inside that line and `line` holds its start.
+// bytes: the rest of that line is read and dropped first (memory stays at the
+// cap), so the next call reads the line after it. `line` holds its start.
 bool read_line(std::istream& in, std::string& line, std::string_view name, long long number,
                std::size_t max_bytes = kMaxLineBytes);
 
