@@ -3,6 +3,8 @@
 #include "map/map_image.hpp"
 #include "map/map_yaml.hpp"
 
+#include "files/output_file.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -75,10 +77,13 @@ void save_map(const grid::OccupancyGrid& grid, const std::filesystem::path& pgm_
   description.origin = grid.origin();
   std::filesystem::path yaml_file = pgm_file;
   yaml_file.replace_extension(".yaml");
-  std::ofstream out(yaml_file, std::ios::trunc);
-  out << format_map_yaml(description);
-  out.close();
-  if (!out) throw MapFileError(yaml_file, "cannot write file");
+  try {
+    files::OutputFile out(yaml_file, {.compression = files::Compression::kNone});
+    out.stream() << format_map_yaml(description);
+    out.commit();
+  } catch (const files::OutputError&) {
+    throw MapFileError(yaml_file, "cannot write file");
+  }
 }
 
 }  // namespace playerkit::map

@@ -236,6 +236,18 @@ TEST_F(MapFileTest, SaveThenLoadGivesTheSameGrid) {
             static_cast<long>(count(original, CellState::unknown)));
 }
 
+TEST_F(MapFileTest, SavingOverAnOlderMapReplacesItAndLeavesNothingElse) {
+  grid::OccupancyGrid small(2, 2, 0.1, {0.0, 0.0});
+  grid::OccupancyGrid large(40, 30, 0.1, {0.0, 0.0});
+  save_map(large, path("map.pgm"));
+  save_map(small, path("map.pgm"));
+  EXPECT_EQ(load_map(path("map.yaml")).width(), 2);
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(folder_)) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"map.pgm", "map.yaml"}));  // no temporaries left
+}
+
 TEST(PlayerMaps, CavePnmLoadsWithPlayersScaleAndNegate) {
   const fs::path file = fs::path(PLAYERKIT_TEST_DATA_DIR) / "maps" / "cave.pnm";
   // As Player's own test_localize.cfg: map_scale 0.03, map_negate 1.

@@ -1,10 +1,11 @@
 #include "map/map_image.hpp"
 
+#include "files/output_file.hpp"
+
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include <algorithm>
-#include <fstream>
 #include <system_error>
 #include <string>
 
@@ -34,13 +35,18 @@ std::optional<GreyImage> read_grey_image(const std::filesystem::path& file) {
 }
 
 bool write_pgm(const GreyImage& image, const std::filesystem::path& file) {
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  if (!out) return false;
-  out << "P5\n# CREATOR: playerkit\n" << image.width << ' ' << image.height << "\n255\n";
-  out.write(reinterpret_cast<const char*>(image.pixels.data()),
-            static_cast<std::streamsize>(image.pixels.size()));
-  out.close();
-  return static_cast<bool>(out);
+  try {
+    // Through a temporary renamed into place: a failed write leaves an older map whole.
+    files::OutputFile output(file, {.compression = files::Compression::kNone});
+    auto& out = output.stream();
+    out << "P5\n# CREATOR: playerkit\n" << image.width << ' ' << image.height << "\n255\n";
+    out.write(reinterpret_cast<const char*>(image.pixels.data()),
+              static_cast<std::streamsize>(image.pixels.size()));
+    output.commit();
+    return true;
+  } catch (const files::OutputError&) {
+    return false;
+  }
 }
 
 grid::OccupancyGrid grid_from_image(const GreyImage& image, double resolution,

@@ -1,8 +1,9 @@
 #include "map/trajectory_plot.hpp"
 
+#include "files/output_file.hpp"
+
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -251,11 +252,14 @@ void write_trajectory_plot(const std::filesystem::path& png, const grid::Occupan
   } catch (const cv::Exception& error) {
     throw MapFileError(png, std::string("cannot encode the plot: ") + error.what());
   }
-  std::ofstream out(png, std::ios::binary | std::ios::trunc);
-  out.write(reinterpret_cast<const char*>(encoded.data()),
-            static_cast<std::streamsize>(encoded.size()));
-  out.close();
-  if (!out) throw MapFileError(png, "cannot write the plot");
+  try {
+    files::OutputFile out(png, {.compression = files::Compression::kNone});
+    out.stream().write(reinterpret_cast<const char*>(encoded.data()),
+                       static_cast<std::streamsize>(encoded.size()));
+    out.commit();
+  } catch (const files::OutputError&) {
+    throw MapFileError(png, "cannot write the plot");
+  }
 }
 
 }  // namespace playerkit::map

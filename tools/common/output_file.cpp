@@ -1,29 +1,35 @@
 #include "output_file.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <stdexcept>
+#include "exit_status.hpp"
 
 namespace playerkit::tools {
+namespace {
 
-OutputFile::OutputFile(const std::string& path, std::ostream& standard_out) : name_(path), out_(&standard_out) {
-  if (path == "-") {
-    name_ = "stdout";
-    return;
+std::vector<std::filesystem::path> as_paths(const std::vector<std::string>& names) {
+  return {names.begin(), names.end()};
+}
+
+files::OutputFile open_output(const std::string& path, std::ostream& standard_out,
+                              const std::vector<std::string>& inputs, files::WriteMode mode) {
+  try {
+    return files::OutputFile(path, {.inputs = as_paths(inputs), .mode = mode, .standard_out = &standard_out});
+  } catch (const files::OutputIsInputError& e) {
+    throw UsageError(e.what());
   }
-  file_ = std::make_unique<std::ofstream>(path, std::ios::out | std::ios::trunc | std::ios::binary);
-  if (!*file_) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
-  out_ = file_.get();
 }
 
-void OutputFile::check() const {
-  // errno says why only right after the failing call; a later check has no reason to give.
-  if (!*out_) throw std::runtime_error("cannot write " + name_);
-}
+}  // namespace
 
-void OutputFile::flush() {
-  out_->flush();
-  check();
+OutputFile::OutputFile(const std::string& path, std::ostream& standard_out, const std::vector<std::string>& inputs,
+                       files::WriteMode mode)
+    : file_(open_output(path, standard_out, inputs, mode)) {}
+
+void refuse_output_over_inputs(const std::string& output, const std::vector<std::string>& inputs) {
+  try {
+    files::refuse_output_over_inputs(output, as_paths(inputs));
+  } catch (const files::OutputIsInputError& e) {
+    throw UsageError(e.what());
+  }
 }
 
 }  // namespace playerkit::tools

@@ -1,5 +1,7 @@
 #include "output_file.hpp"
 
+#include "exit_status.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -33,7 +35,7 @@ TEST(OutputFile, DashWritesToTheStandardOutputGiven) {
   EXPECT_EQ(output.name(), "stdout");
 }
 
-TEST(OutputFile, APathIsCreatedAndTruncated) {
+TEST(OutputFile, APathIsReplacedOnCommitOnly) {
   const auto path = scratch_path("out.csv");
   {
     std::ofstream old(path);
@@ -45,8 +47,26 @@ TEST(OutputFile, APathIsCreatedAndTruncated) {
     output.stream() << "new\n";
     output.flush();
   }
+  EXPECT_EQ(read_whole(path), "old content that is longer than the new one\n");
+  {
+    OutputFile output(path.string(), standard_out);
+    output.stream() << "new\n";
+    output.commit();
+  }
   EXPECT_EQ(read_whole(path), "new\n");
   EXPECT_TRUE(standard_out.str().empty());
+  std::filesystem::remove(path);
+}
+
+TEST(OutputFile, WritingOverAnInputIsAUsageError) {
+  const auto path = scratch_path("in.log");
+  std::ofstream(path) << "the input\n";
+  std::ostringstream standard_out;
+  const auto dotted = (path.parent_path() / "." / path.filename()).string();
+  EXPECT_THROW(OutputFile(dotted, standard_out, {path.string()}), UsageError);
+  EXPECT_THROW(refuse_output_over_inputs(dotted, {"other.log", path.string()}), UsageError);
+  EXPECT_NO_THROW(refuse_output_over_inputs(path.string() + ".new", {path.string()}));
+  EXPECT_EQ(read_whole(path), "the input\n");
   std::filesystem::remove(path);
 }
 
