@@ -9,11 +9,12 @@
 #include <system_error>
 
 #include "log/text_log_fields.hpp"
+#include "text/printable.hpp"
 
 namespace playerkit::log {
 namespace {
 
-std::string quoted(std::string_view text) { return std::string("'").append(text).append("'"); }
+std::string quoted(std::string_view text) { return "'" + text::excerpt(text) + "'"; }
 
 // What a field is called in an error message ("odometry theta", "range 17"),
 // put into a string only when there is an error: a 361-reading line costs none.

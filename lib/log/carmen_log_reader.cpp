@@ -4,6 +4,7 @@
 #include <variant>
 
 #include "log/carmen_log_parser.hpp"
+#include "log/log_line.hpp"
 
 namespace playerkit::log {
 
@@ -34,10 +35,12 @@ void CarmenLogReader::retime(CarmenRecord& record, std::size_t ordinal) const {
 }
 
 std::optional<CarmenRecord> CarmenLogReader::next() {
-  while (std::getline(in_, line_)) {
+  bool too_long = false;
+  while (read_log_line(in_, line_, too_long)) {
     ++line_number_;
     CarmenLine parsed;
     try {
+      if (too_long) throw too_long_line_error(file_, line_number_);
       parsed = parse_carmen_line(line_, file_, line_number_);
     } catch (const LogParseError& error) {
       ++malformed_lines_;

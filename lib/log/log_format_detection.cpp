@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "log/log_input.hpp"
+#include "log/log_line.hpp"
+#include "text/printable.hpp"
 
 namespace playerkit::log {
 namespace {
@@ -61,12 +63,6 @@ bool is_player_data_line(const std::vector<std::string_view>& fields) {
          is_unsigned_decimal(fields[4]) && is_number(fields[5]);
 }
 
-std::string shortened(std::string_view line) {
-  constexpr std::size_t kShown = 60;
-  std::string shown(line.substr(0, kShown));
-  if (line.size() > kShown) shown += "...";
-  return shown;
-}
 
 }  // namespace
 
@@ -88,14 +84,16 @@ std::optional<LogFormat> classify_log_line(std::string_view line) {
   throw std::runtime_error(std::string("neither a Player log line (\"<time> <host> <port> <interface> "
                                        "<index> <time> ...\") nor a CARMEN record (an upper-case keyword "
                                        "such as FLASER): '") +
-                           shortened(line) + "'");
+                           text::excerpt(line) + "'");
 }
 
 LogFormat detect_log_format(std::istream& in, std::string_view name) {
   std::string line;
   std::size_t number = 0;
-  while (number < kMaxDetectionLines && std::getline(in, line)) {
+  bool too_long = false;
+  while (number < kMaxDetectionLines && read_log_line(in, line, too_long)) {
     ++number;
+    if (too_long) throw too_long_line_error(std::string(name), static_cast<int>(number));
     try {
       if (const auto format = classify_log_line(line)) return *format;
     } catch (const std::runtime_error& error) {

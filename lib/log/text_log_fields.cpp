@@ -4,6 +4,8 @@
 #include <cmath>
 #include <system_error>
 
+#include "text/printable.hpp"
+
 namespace playerkit::log {
 namespace {
 
@@ -13,7 +15,7 @@ bool is_separator(char c) {
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
-std::string quoted(std::string_view text) { return std::string("'").append(text).append("'"); }
+std::string quoted(std::string_view text) { return "'" + text::excerpt(text) + "'"; }
 
 // "%.0f" without a locale or a minus zero: wire values in messages.
 std::string whole(double value) {

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "log/log_line.hpp"
 #include "log/text_log_extensions.hpp"
 #include "log/text_log_fields.hpp"
 #include "protocol/binary_codec.hpp"
@@ -298,10 +299,12 @@ TextLogReader::TextLogReader(std::istream& in, std::string file, TextLogReaderOp
 
 std::optional<std::variant<SyncLine, DataLine>> TextLogReader::next() {
   std::string text;
-  while (std::getline(in_, text)) {
+  bool too_long = false;
+  while (read_log_line(in_, text, too_long)) {
     ++line_number_;
     LogLine line;
     try {
+      if (too_long) throw too_long_line_error(file_, line_number_);
       line = parse_log_line(text, file_, line_number_, format_version_);
     } catch (const LogParseError& error) {
       if (options_.strict) throw;

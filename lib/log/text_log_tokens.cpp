@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "text/printable.hpp"
+
 namespace playerkit::log {
 
 std::vector<LineToken> split_line_tokens(std::string_view line) {
@@ -29,7 +31,7 @@ double token_number(const LineToken& token, std::string_view what) {
   const auto parsed = std::from_chars(text.data(), text.data() + text.size(), value);
   if (text.empty() || parsed.ec != std::errc{} || parsed.ptr != text.data() + text.size() ||
       !std::isfinite(value)) {
-    throw std::runtime_error(std::string(what) + ": expected a number, got '" + std::string(token.text) + "'");
+    throw std::runtime_error(std::string(what) + ": expected a number, got '" + text::excerpt(token.text) + "'");
   }
   return value;
 }
