@@ -212,6 +212,31 @@ TEST_F(ReadlogTest, BadSettingsAreConfigErrorsNamingThem) {
             std::string::npos);
 }
 
+TEST_F(ReadlogTest, ACarmenLogIsRefusedSayingWhatReplaysIt) {
+  testing::BuiltinDevices plain;
+  const auto carmen = scratch.write("intel.log", "# CARMEN Logfile\nODOM 1.0 2.0 0.5 0 0 0 100.0 host 0.0\n");
+  const std::string error = load_error(plain, "position:0 ( driver \"readlog\" filename \"" + carmen.string() + "\" )\n");
+  EXPECT_NE(error.find("test.cfg:1:1: driver 'readlog' could not be created: " + carmen.string() +
+                       " is a CARMEN log; readlog replays Player text logs: serve it with `player-log replay " +
+                       carmen.string() + "`"),
+            std::string::npos)
+      << error;
+}
+
+TEST(FirstReplayTime, IsTheTimeOfTheFirstLineOrAnErrorNamingTheFile) {
+  testing::ScratchDirectory scratch("readlog_driver_test");
+  const auto log_path = scratch.file("run.log");
+  testing::write_position_log(log_path, kFourLines);
+  EXPECT_EQ(first_replay_time(log_path), (Timestamp{1000, 0}));
+  const std::string missing = scratch.file("missing.log").string();
+  try {
+    (void)first_replay_time(missing);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& error) {
+    EXPECT_EQ(std::string(error.what()), "cannot open " + missing + ": No such file or directory");
+  }
+}
+
 TEST_F(ReadlogTest, DurationEndsEachPassThatManySecondsAfterItsStart) {
   ReadlogSettings settings;
   settings.duration = 0.5;

@@ -7,7 +7,9 @@
 #include <utility>
 #include <variant>
 
+#include "log/log_format_detection.hpp"
 #include "log/log_input.hpp"
+#include "text/printable.hpp"
 
 namespace playerkit::drivers {
 
@@ -32,19 +34,36 @@ nanoseconds scaled(std::uint64_t log_microseconds, double speed) {
 
 }  // namespace
 
+protocol::Timestamp first_replay_time(const std::filesystem::path& path) {
+  bool carmen = false;
+  try {
+    carmen = log::detect_log_format(path) == log::LogFormat::kCarmen;
+  } catch (const std::runtime_error&) {
+    // Not told apart (unreadable, or no deciding line near the start): the
+    // reader below says what is wrong in a Player log's terms.
+  }
+  if (carmen) {
+    const std::string name = text::printable(path.string());
+    throw std::runtime_error(name + " is a CARMEN log; readlog replays Player text logs: serve it with `player-log replay " +
+                             name + "`, or convert it first with `player-log convert " + name + " -o run.log`");
+  }
+  const auto in = log::open_log_input(path);
+  log::TextLogReader reader(*in, path.string());
+  const auto first = reader.next();
+  if (!first) {
+    if (const auto error = in->error()) throw std::runtime_error(path.string() + ": " + *error);
+    throw std::runtime_error(path.string() + ": no sync or data lines to replay");
+  }
+  return logged_time(*first);
+}
+
 ReplaySession::ReplaySession(ReplayOptions options, core::ManualClock* clock,
                              std::shared_ptr<ReplayTimer> timer, core::Logger& logger)
     : options_(std::move(options)),
       clock_(clock),
       timer_(timer ? std::move(timer) : std::make_shared<SteadyReplayTimer>()),
       logger_(logger) {
-  const auto in = log::open_log_input(options_.path);
-  log::TextLogReader reader(*in, options_.path.string());
-  const auto first = reader.next();
-  if (!first) {
-    throw std::runtime_error(options_.path.string() + ": no sync or data lines to replay");
-  }
-  first_log_time_ = logged_time(*first);
+  first_log_time_ = first_replay_time(options_.path);
   last_log_time_ = first_log_time_;
   // Before anyone subscribes the server already speaks log time.
   if (clock_ != nullptr) clock_->set(first_log_time_);

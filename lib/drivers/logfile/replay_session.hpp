@@ -53,11 +53,17 @@ struct ReplayOptions {
   std::chrono::milliseconds burst_settle{500};
 };
 
+// The time of the first sync or data line of the Player text log `path`:
+// where a replay starts. Throws std::runtime_error naming the file when it
+// cannot be opened, is a CARMEN log (saying what replays one: player-log), or
+// has no line to replay; log::LogParseError for a file version it cannot read.
+protocol::Timestamp first_replay_time(const std::filesystem::path& path);
+
 class ReplaySession {
  public:
   // Opens the log and reads up to its first sync or data line, so that a
   // missing, unreadable or empty log is refused before serving starts (throws
-  // std::runtime_error or log::LogParseError). `clock` may be null; `timer`
+  // what first_replay_time throws). `clock` may be null; `timer`
   // null means real time.
   ReplaySession(ReplayOptions options, core::ManualClock* clock,
                 std::shared_ptr<ReplayTimer> timer, core::Logger& logger);

@@ -5,8 +5,12 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <exception>
+#include <filesystem>
+#include <system_error>
 #include <utility>
 
 #include "config/errors.hpp"
@@ -14,6 +18,7 @@
 #include "protocol/device_address.hpp"
 #include "protocol/interfaces.hpp"
 #include "protocol/message.hpp"
+#include "text/printable.hpp"
 
 namespace playerkit::drivers {
 
@@ -23,6 +28,33 @@ namespace {
 constexpr std::uint64_t kSyncPeriodMicroseconds = 100'000;
 // How long the thread sleeps without data before checking for a due sync line.
 constexpr std::chrono::milliseconds kIdleWait{20};
+
+// What can be known about writing `filename` without creating or truncating
+// it: not a directory, in a directory that exists and may be written to. So a
+// configuration that could never record is refused when it is loaded (and by
+// player-serve --check), not when a client subscribes.
+void check_log_destination(const std::string& filename, const config::SourceLocation& where) {
+  namespace fs = std::filesystem;
+  const fs::path path(filename);
+  const std::string shown = "writelog: filename \"" + text::excerpt(filename) + "\"";
+  std::error_code error;
+  if (fs::is_directory(path, error)) throw config::ConfigError(where, shown + " is a directory");
+  const fs::path directory = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  const fs::file_status status = fs::status(directory, error);
+  if (!fs::exists(status)) {
+    throw config::ConfigError(where, shown + ": directory " + text::excerpt(directory.string()) + " does not exist");
+  }
+  if (!fs::is_directory(status)) {
+    throw config::ConfigError(where, shown + ": " + text::excerpt(directory.string()) + " is not a directory");
+  }
+  if (::access(directory.c_str(), W_OK | X_OK) != 0) {
+    throw config::ConfigError(where, shown + ": cannot create files in " + text::excerpt(directory.string()) +
+                                         ": " + std::strerror(errno));
+  }
+  if (fs::exists(path, error) && ::access(path.c_str(), W_OK) != 0) {
+    throw config::ConfigError(where, shown + ": cannot write it: " + std::strerror(errno));
+  }
+}
 
 }  // namespace
 
@@ -178,6 +210,10 @@ core::DriverSpec writelog_driver_spec() {
     // A plain string, relative to the server's working directory, as in 1.5.
     std::string filename = section.read_string("filename", "writelog.log");
     if (filename.empty()) throw config::ConfigError(section.where(), "writelog: filename is empty");
+    const config::Property* filename_property = section.property("filename");
+    check_log_destination(filename, filename_property != nullptr && !filename_property->values.empty()
+                                        ? filename_property->values.front().where
+                                        : section.where());
     std::vector<core::DeviceKey> sources;
     const std::size_t count = section.tuple_size("devices");
     for (std::size_t i = 0; i < count; ++i) {

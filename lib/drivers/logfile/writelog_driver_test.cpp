@@ -212,6 +212,27 @@ TEST_F(WritelogTest, BadConfigurationIsRefusedWithItsLocation) {
             std::string::npos);
 }
 
+TEST_F(WritelogTest, AFilenameThatCouldNeverBeWrittenIsRefusedWhenLoaded) {
+  const std::string sources = "position:0 ( driver \"testsource\" )\n";
+  const auto refused = [&](const std::string& filename) {
+    testing::BuiltinDevices other;
+    other.registry.add(test_source_spec());
+    return load_error(other, sources + "null:0 ( driver \"writelog\" filename \"" + filename +
+                                 "\" devices [\"position:0\"] )\n");
+  };
+  const std::string directory = scratch.path().string();
+  EXPECT_EQ(refused(directory), "test.cfg:2:37: writelog: filename \"" + directory + "\" is a directory");
+  const std::string nowhere = scratch.file("no-such-directory/run.log").string();
+  EXPECT_EQ(refused(nowhere), "test.cfg:2:37: writelog: filename \"" + nowhere + "\": directory " +
+                                  scratch.file("no-such-directory").string() + " does not exist");
+  const auto plain_file = scratch.write("plain", "");
+  EXPECT_EQ(refused(plain_file.string() + "/run.log"), "test.cfg:2:37: writelog: filename \"" + plain_file.string() +
+                                                          "/run.log\": " + plain_file.string() + " is not a directory");
+  // Nothing is created while checking.
+  EXPECT_EQ(refused(log_path.string()), "no error");
+  EXPECT_FALSE(std::filesystem::exists(log_path));
+}
+
 TEST_F(WritelogTest, SetUpFailsWhenASourceIsMissingAndReleasesTheOthers) {
   builtin.load("position:0 ( driver \"testsource\" )\n"
                "null:0 ( driver \"writelog\" filename \"" + log_path.string() +
