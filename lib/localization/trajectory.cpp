@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "log/log_input.hpp"
+
 namespace playerkit::localization {
 namespace {
 
@@ -93,9 +95,11 @@ Trajectory read_trajectory_csv(std::istream& in, std::string_view name) {
 }
 
 Trajectory read_trajectory_csv(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open " + path.string());
-  return read_trajectory_csv(in, path.string());
+  // Plain or gzip, as every file the tools write may be (`localize -o est.csv.gz`).
+  auto in = log::open_log_input(path);
+  auto trajectory = read_trajectory_csv(*in, path.string());
+  if (const auto error = in->error()) throw std::runtime_error(path.string() + ": " + *error);
+  return trajectory;
 }
 
 void write_trajectory_csv(std::ostream& out, const Trajectory& trajectory) {

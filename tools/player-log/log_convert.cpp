@@ -46,7 +46,7 @@ ConvertTarget parse_convert_target(const std::string& text) {
 
 void run_convert(const ConvertOptions& options, std::ostream& out, std::ostream& err, Progress& progress) {
   const auto target = options.to.value_or(default_target(options, detect_log_format(options.input)));
-  OutputFile output(options.output, out);
+  OutputFile output(options.output, out, {options.input});
   auto& stream = output.stream();
 
   log::PlayerToCarmen to_carmen;
@@ -98,7 +98,7 @@ void run_convert(const ConvertOptions& options, std::ostream& out, std::ostream&
   });
   to_carmen.finish();
   write_records();
-  output.flush();
+  output.commit();
   report_malformed(stats, err);
   if (target == ConvertTarget::kCarmen) {
     if (not_carmen > 0) {
@@ -117,7 +117,7 @@ void run_cut(const CutOptions& options, std::ostream& out, std::ostream& err, Pr
     throw std::runtime_error(options.input + " is a CARMEN log; cut reads Player logs (convert it first)");
   }
   auto in = log::open_log_input(options.input);
-  OutputFile output(options.output, out);
+  OutputFile output(options.output, out, {options.input});
   auto& stream = output.stream();
   auto version = log::LogFormatVersion::k0_0_0;
   std::optional<double> first_time;
@@ -165,7 +165,7 @@ void run_cut(const CutOptions& options, std::ostream& out, std::ostream& err, Pr
     output.check();
   }
   if (const auto error = in->error()) throw std::runtime_error(options.input + ": " + *error);
-  output.flush();
+  output.commit();
   for (const auto& message : kept) err << message << "\n";
   if (malformed > 0) err << "player-log: " << malformed << " malformed line(s) skipped\n";
 }

@@ -51,7 +51,56 @@ class Limits {
   Clock::time_point deadline_{};
 };
 
-void record_from_server(const RecordOptions& options, OutputFile& output, std::ostream& err, Limits& limits) {
+// The output, opened (truncating an older file of that name) only once the
+// recording starts, so that a recording that cannot start leaves it alone.
+// It streams to its final name (tail -f, player-log info while it runs); what
+// was recorded reaches the file at every line, for gzip at most once a
+// second (each flush costs compression), and is kept whatever ends the run.
+class Recording {
+ public:
+  Recording(const RecordOptions& options, std::ostream& out, std::vector<std::string> inputs)
+      : options_(options), out_(out), inputs_(std::move(inputs)) {}
+
+  std::ostream& stream() { return open().stream(); }
+  [[nodiscard]] bool started() const { return output_.has_value(); }
+
+  // After each line.
+  void flush() {
+    OutputFile& output = open();
+    const auto now = Clock::now();
+    if (output.compressed() && now - last_flush_ < std::chrono::seconds(1)) {
+      held_back_ = true;
+      output.check();
+      return;
+    }
+    last_flush_ = now;
+    held_back_ = false;
+    output.flush();
+  }
+  // When the input pauses: what flush() held back goes out.
+  void flush_held_back() {
+    if (!held_back_) return;
+    held_back_ = false;
+    last_flush_ = Clock::now();
+    open().flush();
+  }
+  void finish() { open().commit(); }
+
+ private:
+  OutputFile& open() {
+    if (!output_) output_.emplace(options_.output, out_, inputs_, files::WriteMode::kStreaming);
+    return *output_;
+  }
+
+  const RecordOptions& options_;
+  std::ostream& out_;
+  std::vector<std::string> inputs_;
+  std::optional<OutputFile> output_;
+  Clock::time_point last_flush_{};
+  bool held_back_ = false;
+};
+
+void record_from_server(const RecordOptions& options, Recording& output, std::ostream& err, Limits& limits) {
   auto connection = client::Client::connect(options.server.host, options.server.port,
                                             std::chrono::milliseconds(static_cast<long>(options.timeout * 1000)));
   for (const auto device : options.devices) {
@@ -70,7 +119,10 @@ void record_from_server(const RecordOptions& options, OutputFile& output, std::o
   bool data_since_sync = false;
   while (!limits.done()) {
     const auto message = connection.read(limits.wait());
-    if (!message) continue;
+    if (!message) {
+      output.flush_held_back();
+      continue;
+    }
     if (message->type() == protocol::MessageType::kSynch) {
       if (!data_since_sync) continue;
       stream << log::format_sync_line(message->time(), host, options.server.port);
@@ -92,9 +144,8 @@ void record_from_server(const RecordOptions& options, OutputFile& output, std::o
   }
 }
 
-void record_from_stdin(const RecordOptions& options, std::istream& in, OutputFile& output, std::ostream& err,
+void record_from_stdin(const RecordOptions& options, std::istream& in, Recording& output, std::ostream& err,
                        Limits& limits) {
-  auto& stream = output.stream();
   auto version = log::LogFormatVersion::k0_0_0;
   bool header_written = false;
   std::size_t malformed = 0;
@@ -115,22 +166,21 @@ void record_from_stdin(const RecordOptions& options, std::istream& in, OutputFil
         if (!parsed) throw std::runtime_error("stdin: unknown file version '" + header->value + "'");
         version = *parsed;
       }
-      stream << text << "\n";
+      output.stream() << text << "\n";
       header_written = true;
     } else if (std::holds_alternative<log::SkippedLine>(line)) {
       continue;
     } else {
       if (!header_written) {
-        stream << log::log_file_header();
+        output.stream() << log::log_file_header();
         header_written = true;
       }
-      stream << text << "\n";
+      output.stream() << text << "\n";
       if (std::holds_alternative<log::DataLine>(line)) ++limits.recorded;
     }
     output.flush();
   }
-  if (!header_written) stream << log::log_file_header();
-  output.flush();
+  if (!header_written) output.stream() << log::log_file_header();
   if (malformed > 0) err << "player-log: " << malformed << " malformed line(s) skipped\n";
 }
 
@@ -158,14 +208,21 @@ void parse_record_targets(const std::vector<std::string>& targets, RecordOptions
 
 int run_record(const RecordOptions& options, std::istream& in, std::ostream& out, std::ostream& err,
                const std::function<bool()>& stop_requested) {
+  const std::vector<std::string> inputs = options.from_stdin ? std::vector<std::string>{"-"}
+                                                             : std::vector<std::string>{};
+  // Before connecting: writing over the input is a usage error (exit 2).
+  tools::refuse_output_over_inputs(options.output, inputs);
+  Recording output(options, out, inputs);
   try {
-    OutputFile output(options.output, out);
     Limits limits(options, stop_requested);
     if (options.from_stdin) record_from_stdin(options, in, output, err, limits);
     else record_from_server(options, output, err, limits);
+    output.finish();
     return kExitOk;
   } catch (const std::exception& e) {
     err << "player-log: " << e.what() << "\n";
+    // What was recorded before the failure stays in the file (the Recording's
+    // OutputFile ends it as written).
     return kExitFailure;
   }
 }

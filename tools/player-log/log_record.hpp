@@ -1,9 +1,15 @@
 #pragma once
 // `player-log record`: a client-side Player log. From a server: subscribe to
 // the devices (lib/client) and write each data message as a log line, a
-// "sync" line per SYNCH once data has been written, flushing every line so
-// that a signal loses nothing already received. From stdin ("-"): lines of
+// "sync" line per SYNCH once data has been written. From stdin ("-"): lines of
 // `player-cat --format log`, each checked with the log reader and kept as is.
+//
+// The log streams to its final name (so `tail -f` and `player-log info` see
+// it grow), opened only once the recording starts: a recording that cannot
+// start (no server, no such device) leaves an older file of that name alone.
+// Every line is flushed (gzip, `-o run.log.gz`: at most once a second), and
+// SIGINT/SIGTERM end the run between lines, so no line is ever torn; whatever
+// ends the run, what was recorded stays. The output may not be stdin's file.
 
 #include <cstdint>
 #include <functional>
