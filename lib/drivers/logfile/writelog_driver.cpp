@@ -80,6 +80,15 @@ WritelogDriver::~WritelogDriver() {
   sources_.clear();
 }
 
+void WritelogDriver::check() {
+  for (const core::DeviceKey& key : source_keys_) {
+    const core::Device* source = devices_.find(key.port, key.address);
+    if (source == nullptr || source == &device()) {
+      throw core::DriverError("writelog: no device " + core::to_string(key) + " to record");
+    }
+  }
+}
+
 void WritelogDriver::open() {
   std::vector<core::Device*> found;
   for (const core::DeviceKey& key : source_keys_) {
@@ -89,9 +98,13 @@ void WritelogDriver::open() {
     }
     found.push_back(source);
   }
-  out_.open(filename_, std::ios::out | std::ios::trunc);
-  if (!out_) throw core::DriverError("writelog: cannot write " + filename_);
+  try {
+    out_.emplace(filename_, files::OutputFileOptions{.mode = files::WriteMode::kStreaming});
+  } catch (const std::exception& e) {
+    throw core::DriverError(std::string("writelog: ") + e.what());
+  }
   write_failed_ = false;
+  unflushed_ = false;
   write_line(log::log_file_header());
   last_sync_us_ = core::to_microseconds(device().clock().now());
   {
@@ -109,7 +122,7 @@ void WritelogDriver::open() {
     core::DeviceListener* listener = this;  // a private base: convert here
     for (core::Device* source : found) subscribed.emplace_back(*source, listener, "writelog");
   } catch (const core::DriverError&) {
-    out_.close();
+    out_.reset();
     throw;  // `subscribed` undoes the ones taken
   }
   sources_ = std::move(subscribed);
@@ -126,7 +139,12 @@ void WritelogDriver::close() {
     for (const core::SourceSubscription& source : sources_) collect_new_samples(*source.device());
   }
   write_pending();
-  out_.close();
+  try {
+    out_->commit();  // the gzip trailer, flushed and synced
+  } catch (const std::exception&) {
+    report_write_failure();
+  }
+  out_.reset();
   sources_.clear();
 }
 
@@ -139,6 +157,7 @@ void WritelogDriver::run(std::stop_token stop) {
     }
     write_pending();
     write_sync_if_due();
+    flush_written(true);
   }
 }
 
@@ -192,12 +211,26 @@ void WritelogDriver::write_sync_if_due() {
 }
 
 void WritelogDriver::write_line(const std::string& line) {
-  out_ << line;
-  out_.flush();  // a crash or kill -9 loses at most the line being written
-  if (!out_ && !write_failed_) {
-    write_failed_ = true;
-    device().logger().error(device().name() + ": writing " + filename_ + " failed");
-  }
+  out_->stream() << line;
+  unflushed_ = true;
+  flush_written(false);
+}
+
+void WritelogDriver::flush_written(bool periodic) {
+  if (!unflushed_) return;
+  const auto now = std::chrono::steady_clock::now();
+  // A plain file: a crash or kill -9 loses at most the line being written.
+  if (out_->compressed() && !(periodic && now - last_flush_ >= std::chrono::seconds(1))) return;
+  last_flush_ = now;
+  unflushed_ = false;
+  out_->stream().flush();
+  if (!out_->stream()) report_write_failure();
+}
+
+void WritelogDriver::report_write_failure() {
+  if (write_failed_) return;
+  write_failed_ = true;
+  device().logger().error(device().name() + ": writing " + filename_ + " failed");
 }
 
 core::DriverSpec writelog_driver_spec() {

@@ -9,16 +9,20 @@
 // as in 1.5), plus a `sync` line at most every 100 ms of server time. Every
 // line is flushed as it is written; shutdown (the last unsubscription, or the
 // server stopping on SIGINT/SIGTERM) writes whatever was received before the
-// file is closed. The file is truncated at each set-up, as in 1.5. Requests
+// file is closed. The file is truncated at each set-up, as in 1.5, and
+// written in place (files::OutputFile's streaming mode) so that it can be
+// watched as it grows. A filename ending in ".gz" is written gzip-compressed,
+// flushed at most once a second (each flush costs compression). Requests
 // are answered NACK; no data, no commands.
 
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
-#include <fstream>
+#include <chrono>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <stop_token>
 #include <string>
 #include <vector>
@@ -28,6 +32,7 @@
 #include "core/driver.hpp"
 #include "core/driver_registry.hpp"
 #include "core/source_subscription.hpp"
+#include "files/output_file.hpp"
 
 namespace playerkit::drivers {
 
@@ -38,6 +43,9 @@ class WritelogDriver final : public core::ThreadedDriver, private core::DeviceLi
   WritelogDriver(std::string filename, std::vector<core::DeviceKey> sources,
                  core::DeviceTable& devices, std::string host);
   ~WritelogDriver() override;
+
+  // Every device to record exists (they are looked up again at set-up).
+  void check() override;
 
  protected:
   void open() override;
@@ -58,14 +66,20 @@ class WritelogDriver final : public core::ThreadedDriver, private core::DeviceLi
   void write_pending();
   void write_sync_if_due();
   void write_line(const std::string& line);
+  // Plain files: after every line. Gzip: at most once a second, from the
+  // thread's loop (`periodic`).
+  void flush_written(bool periodic);
+  void report_write_failure();
 
   const std::string filename_;
   const std::vector<core::DeviceKey> source_keys_;
   core::DeviceTable& devices_;
   const std::string host_;
 
-  std::ofstream out_;
+  std::optional<files::OutputFile> out_;  // between open() and close()
   bool write_failed_ = false;
+  bool unflushed_ = false;
+  std::chrono::steady_clock::time_point last_flush_{};
   std::uint64_t last_sync_us_ = 0;
 
   std::mutex pending_mutex_;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <fstream>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -12,6 +13,8 @@
 #include "drivers/logfile/logfile_test_support.hpp"
 #include "drivers/logfile/readlog_driver.hpp"
 #include "drivers/test_support.hpp"
+#include "log/log_input.hpp"
+#include "log/text_log_reader.hpp"
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::drivers {
@@ -239,6 +242,29 @@ TEST_F(WritelogTest, SetUpFailsWhenASourceIsMissingAndReleasesTheOthers) {
                "\" devices [\"position:0\" \"position:5\"] )\n");
   EXPECT_FALSE(recorder().subscribe());
   EXPECT_EQ(position(0).subscriptions(), 0);
+}
+
+TEST_F(WritelogTest, AGzFilenameIsRecordedGzipCompressed) {
+  log_path = scratch.file("recorded.log.gz");
+  load_recorder();
+  ASSERT_TRUE(recorder().subscribe());
+  for (int i = 0; i < 50; ++i) position(0).publish(position_payload(i), Timestamp{700, static_cast<std::uint32_t>(i)});
+  recorder().unsubscribe();
+  std::ifstream raw(log_path, std::ios::binary);
+  std::string magic(2, '\0');
+  raw.read(magic.data(), 2);
+  EXPECT_EQ(magic, "\x1f\x8b");
+  auto in = log::open_log_input(log_path);
+  log::TextLogReader reader(*in, log_path.string());
+  std::size_t data_lines = 0;
+  for (int guard = 0; guard < 1000; ++guard) {
+    const auto line = reader.next();
+    if (!line) break;
+    if (std::holds_alternative<log::DataLine>(*line)) ++data_lines;
+  }
+  EXPECT_EQ(data_lines, 50U);
+  EXPECT_FALSE(in->error());
+  EXPECT_EQ(reader.malformed_count(), 0U);
 }
 
 TEST(WritelogDefaults, NullSectionsWithoutDriverAreWritelog) {
