@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <set>
@@ -15,6 +14,7 @@
 #include <vector>
 
 #include "client/client.hpp"
+#include "files/output_file.hpp"
 #include "formatters.hpp"
 #include "message_decoder.hpp"
 #include "protocol/errors.hpp"
@@ -96,7 +96,7 @@ class Outputs {
       case OutputFormat::kCsv: {
         std::map<protocol::DeviceAddress, std::ostream*> sinks;
         for (std::size_t i = 0; i < options.devices.size(); ++i) {
-          sinks[options.devices[i]] = files_.empty() ? &out : files_[i].stream.get();
+          sinks[options.devices[i]] = files_.empty() ? &out : &files_[i].output->stream();
         }
         formatter_ = tools::make_csv_formatter(std::move(sinks), options.fields);
         break;
@@ -115,14 +115,20 @@ class Outputs {
       throw CatFailure(std::string("cannot write to stdout: ") + std::strerror(errno));
     }
     for (const auto& file : files_) {
-      if (!*file.stream) throw CatFailure("cannot write " + file.path.string() + ": " + std::strerror(errno));
+      try {
+        file.output->check();
+      } catch (const files::OutputError& e) {
+        throw CatFailure(e.what());
+      }
     }
   }
 
  private:
   struct File {
     std::filesystem::path path;
-    std::unique_ptr<std::ofstream> stream;
+    // Streaming: the CSV grows under its name while player-cat runs, and
+    // keeps what was written whatever ends the run.
+    std::unique_ptr<files::OutputFile> output;
   };
 
   void open_csv_files(const CatOptions& options) {
@@ -131,8 +137,13 @@ class Outputs {
     if (error) throw CatFailure("cannot create " + options.csv_dir->string() + ": " + error.message());
     for (const auto device : options.devices) {
       File file{*options.csv_dir / csv_file_name(device), nullptr};
-      file.stream = std::make_unique<std::ofstream>(file.path, std::ios::out | std::ios::trunc);
-      if (!*file.stream) throw CatFailure("cannot write " + file.path.string() + ": " + std::strerror(errno));
+      try {
+        file.output = std::make_unique<files::OutputFile>(
+            file.path, files::OutputFileOptions{.compression = files::Compression::kNone,
+                                                .mode = files::WriteMode::kStreaming});
+      } catch (const files::OutputError& e) {
+        throw CatFailure(e.what());
+      }
       files_.push_back(std::move(file));
     }
   }
