@@ -153,3 +153,88 @@ first = float(sys.argv[2]); assert first + 100 <= d["start"] and d["end"] <= fir
   run "$player_log" record "127.0.0.1:$port" power:0 -o "$BATS_TEST_TMPDIR/x.log" --timeout 1
   [ "$status" -eq 1 ]
 }
+
+# Output files (docs/compatibility.md, "Output files"): never over an input,
+# written through a temporary renamed at the end, .gz written compressed.
+
+@test "cut and convert refuse to write over their input, whatever its spelling" {
+  mkdir "$BATS_TEST_TMPDIR/out" && cd "$BATS_TEST_TMPDIR/out"
+  zcat "$radish/intel-corrected.log.gz" | head -n 200 > carmen.log
+  "$player_log" convert carmen.log -o a.log 2>/dev/null
+  before="$(sha256sum < a.log)"
+  ln -s a.log link.log
+  ln a.log hard.log
+  for spelling in a.log ./a.log "$PWD/a.log" link.log hard.log; do
+    run --separate-stderr "$player_log" cut a.log -o "$spelling"
+    [ "$status" -eq 2 ]
+    [[ "$stderr" == "player-log: cannot write $spelling: it is the input a.log (the same file)"* ]]
+    run --separate-stderr "$player_log" convert a.log -o "$spelling" --to carmen
+    [ "$status" -eq 2 ]
+  done
+  [ "$(sha256sum < a.log)" = "$before" ]
+  [ -L link.log ]
+  # Nothing else was left behind: no temporaries.
+  [ "$(ls | sort | tr '\n' ' ')" = "a.log carmen.log hard.log link.log " ]
+}
+
+@test "a corrupt .gz: the error names the file once, with the byte and line; convert and cut leave no output" {
+  mkdir "$BATS_TEST_TMPDIR/out" && cd "$BATS_TEST_TMPDIR/out"
+  "$player_log" convert "$radish/intel-corrected.log.gz" -o whole.log.gz 2>/dev/null
+  [ "$(head -c 2 whole.log.gz | od -An -tx1 | tr -d ' ')" = "1f8b" ]
+  head -c 40000 whole.log.gz > cut.log.gz
+  run --separate-stderr "$player_log" convert cut.log.gz -o out.carmen --to carmen
+  [ "$status" -eq 1 ]
+  [[ "$stderr" =~ player-log:\ cut\.log\.gz:\ gzip\ data\ cut\ short:\ the\ file\ ends\ at\ byte\ 40000,\ in\ line\ [0-9]+$ ]]
+  [ ! -e out.carmen ]
+  echo "an older output" > old.log
+  run "$player_log" cut cut.log.gz -o old.log
+  [ "$status" -eq 1 ]
+  [ "$(cat old.log)" = "an older output" ]
+  [ "$(ls | sort | tr '\n' ' ')" = "cut.log.gz old.log whole.log.gz " ]
+  run --separate-stderr "$player_log" info cut.log.gz
+  [ "$status" -eq 1 ]
+  [[ "$stderr" == *"cut.log.gz: gzip data cut short: the file ends at byte 40000, in line "* ]]
+  [[ "$stderr" != *"cut.log.gz: cut.log.gz"* ]]
+}
+
+@test "record -o x.log.gz writes gzip that info reads; a record that cannot start leaves an older file alone" {
+  serve_battery
+  mkdir "$BATS_TEST_TMPDIR/out" && cd "$BATS_TEST_TMPDIR/out"
+  run --separate-stderr "$player_log" record "$target" power:0 -o x.log.gz -n 20
+  [ "$status" -eq 0 ]
+  [ "$(head -c 2 x.log.gz | od -An -tx1 | tr -d ' ')" = "1f8b" ]
+  gzip -t x.log.gz
+  [ "$("$player_log" info --json --strict x.log.gz | count_of power:0)" -eq 20 ]
+  "$player_log" cut x.log.gz -o y.log.gz --devices power:0
+  [ "$(zcat y.log.gz | grep -c ' power ')" -eq 20 ]
+
+  echo "yesterday's run" > run.log
+  port="$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
+  run "$player_log" record "127.0.0.1:$port" power:0 -o run.log --timeout 1
+  [ "$status" -eq 1 ]
+  [ "$(cat run.log)" = "yesterday's run" ]
+  run "$player_log" record "$target" laser:0 -o run.log
+  [ "$status" -eq 1 ]
+  [ "$(cat run.log)" = "yesterday's run" ]
+  run "$player_log" record - -o run.log < run.log
+  [ "$status" -eq 2 ]
+  [ "$(cat run.log)" = "yesterday's run" ]
+}
+
+@test "record -o x.log.gz stopped by SIGTERM leaves a whole gzip file" {
+  serve_battery
+  "$player_log" record "$target" power:0 -o "$BATS_TEST_TMPDIR/long.log.gz" 2>"$BATS_TEST_TMPDIR/record.err" &
+  record_pid=$!
+  # Flushed at least once a second: the live file decodes (up to its missing end).
+  for _ in $(seq 1 100); do
+    [ "$(zcat "$BATS_TEST_TMPDIR/long.log.gz" 2>/dev/null | grep -c ' power ' || true)" -ge 10 ] && break
+    sleep 0.1
+  done
+  kill -TERM "$record_pid"
+  wait_for_exit "$record_pid"
+  [ "$exit_status" -eq 0 ]
+  gzip -t "$BATS_TEST_TMPDIR/long.log.gz"
+  run --separate-stderr "$player_log" info --strict "$BATS_TEST_TMPDIR/long.log.gz"
+  [ "$status" -eq 0 ]
+  [ "$(zcat "$BATS_TEST_TMPDIR/long.log.gz" | grep -c ' power ')" -ge 10 ]
+}
