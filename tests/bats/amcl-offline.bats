@@ -140,3 +140,42 @@ PY
   run --separate-stderr "$amcl_offline" eval missing.csv --truth "$intel"
   [ "$status" -eq 1 ]
 }
+
+# Output files (docs/compatibility.md, "Output files"): never over an input,
+# written through a temporary renamed at the end, .gz written compressed.
+
+@test "map, perturb and localize refuse to write over their inputs; .gz outputs are gzip and read back" {
+  zcat "$intel" | head -n 400 > small.log
+  before="$(sha256sum < small.log)"
+  ln -s small.log link.log
+  "$amcl_offline" map small.log -o small.pgm 2>/dev/null
+  for spelling in small.log ./small.log link.log; do
+    run --separate-stderr "$amcl_offline" perturb small.log -o "$spelling"
+    [ "$status" -eq 2 ]
+    [[ "$stderr" == "amcl-offline: cannot write $spelling: it is the input small.log (the same file)"* ]]
+    run "$amcl_offline" map small.log -o "$spelling"
+    [ "$status" -eq 2 ]
+    run "$amcl_offline" localize small.log --map small.yaml --init-pose truth -o "$spelling"
+    [ "$status" -eq 2 ]
+    run "$amcl_offline" localize small.log --map small.yaml --init-pose truth -o est.csv --plot "$spelling"
+    [ "$status" -eq 2 ]
+  done
+  run "$amcl_offline" localize small.log --map small.yaml --init-pose truth -o small.yaml
+  [ "$status" -eq 2 ]
+  [ "$(sha256sum < small.log)" = "$before" ]
+  grep -q '^image: small.pgm' small.yaml
+
+  run --separate-stderr "$amcl_offline" perturb small.log -o noisy.log.gz --seed 3
+  [ "$status" -eq 0 ]
+  [ "$(head -c 2 noisy.log.gz | od -An -tx1 | tr -d ' ')" = "1f8b" ]
+  [ "$(zcat noisy.log.gz | wc -l)" -eq 400 ]
+  run --separate-stderr "$amcl_offline" localize noisy.log.gz --map small.yaml --init-pose truth -o est.csv.gz
+  [ "$status" -eq 0 ]
+  gzip -t est.csv.gz
+  [ "$(zcat est.csv.gz | head -n 1 | cut -d, -f1-4)" = "time,x,y,yaw" ]
+  run --separate-stderr "$amcl_offline" eval est.csv.gz --truth small.log
+  [ "$status" -eq 0 ]
+  [[ "$output" == *"matched"* ]]
+  # Nothing half-written was left anywhere.
+  [ -z "$(ls | grep '\.tmp-' || true)" ]
+}
