@@ -29,6 +29,10 @@ real-time factor. eval reports the absolute trajectory error (RMSE and max
 of position and heading) and the time and distance to convergence (within
 0.3 m and 10 degrees for 5 s).
 
+Output files: -o and --plot may not name an input (also as ./x, a symlink or a hard
+link: exit 2). Each is written to a temporary beside it and renamed at the end, so a
+failure or a signal leaves an older file untouched; a name ending in .gz is written gzip.
+
 Exit status: 0 done, 1 runtime error (unreadable log or map, cannot write),
 2 usage error.)";
 

@@ -47,6 +47,10 @@ Replay serves until SIGINT/SIGTERM (exit 0), also after the end of the log;
 clients get every message as long as they keep within 256 messages of the
 replay, and with --burst whatever their pace.
 Signals: SIGINT and SIGTERM stop record cleanly (every line received is written), exit 0.
+Output files: -o may not be the input (also as ./a.log, a symlink or a hard link: exit 2).
+convert and cut write a temporary beside the output and rename it at the end: an error
+or a signal leaves no output and an older file untouched. record writes to its name as
+it goes (tail -f works), opened once the devices are granted. NAME.gz is written gzip.
 Exit status: 0 done, 1 runtime error (missing or unreadable file, malformed
 line with --strict, cannot connect, no such device), 2 usage error.)";
 
