@@ -108,6 +108,8 @@ std::optional<std::string> Device::unavailable_reason() const {
   return unavailable_reason_;
 }
 
+void Device::check() { driver_->check(); }
+
 void Device::prepare() { driver_->prepare(); }
 
 void Device::update() {

@@ -109,6 +109,8 @@ class Device {
   // already held are kept. Every setup starts available.
   void set_available(bool available, std::string reason = {});
   [[nodiscard]] bool available() const;
+  // Driver::check(): once every device exists, before anything is opened.
+  void check();
   // Once before serving.
   void prepare();
   // One event-loop step for subscribed drivers without a thread of their own:

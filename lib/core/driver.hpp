@@ -59,6 +59,11 @@ class Driver {
   Driver& operator=(const Driver&) = delete;
   virtual ~Driver() = default;
 
+  // Once every device is created, before anything is opened (and all that
+  // `player-serve --check` runs): verify what can be verified without the
+  // hardware, the network or writing anything, such as the other devices this
+  // one needs. Throw DriverError; it is reported at the device's declaration.
+  virtual void check() {}
   // Once, after every device is created and before the server accepts clients.
   virtual void prepare() {}
   virtual void setup() {}

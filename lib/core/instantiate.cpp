@@ -69,4 +69,16 @@ void instantiate_devices(const config::ConfigFile& config, const DriverRegistry&
   }
 }
 
+void check_devices(const config::ConfigFile& config, DeviceTable& devices) {
+  for (const config::DeviceDeclaration& declaration : config.devices()) {
+    Device* device = devices.find(DeviceKey{declaration.port, declaration.address});
+    if (device == nullptr) continue;
+    try {
+      device->check();
+    } catch (const DriverError& e) {
+      throw config::ConfigError(declaration.where, e.what());
+    }
+  }
+}
+
 }  // namespace playerkit::core

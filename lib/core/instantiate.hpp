@@ -20,4 +20,9 @@ config::LoadOptions load_options_for(const DriverRegistry& registry, std::uint16
 void instantiate_devices(const config::ConfigFile& config, const DriverRegistry& registry,
                          DeviceTable& devices, const Clock& clock, Logger& logger);
 
+// Driver::check() on the device of every declaration of `config`, once all
+// are instantiated. Throws config::ConfigError at the declaration of the
+// first device whose check fails.
+void check_devices(const config::ConfigFile& config, DeviceTable& devices);
+
 }  // namespace playerkit::core

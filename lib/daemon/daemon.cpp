@@ -7,6 +7,7 @@
 #include "config/errors.hpp"
 #include "core/instantiate.hpp"
 #include "core/plugin.hpp"
+#include "daemon/check.hpp"
 #include "drivers/logfile/readlog_driver.hpp"
 #include "server/server.hpp"
 
@@ -21,6 +22,14 @@ Daemon::Daemon(ServeOptions options) : options_(std::move(options)), logger_(opt
     throw DaemonError(ServeResult::failed, e.what());
   }
   if (options_.readlog) {
+    // Before any port is bound: a log that cannot be replayed is refused
+    // before the server says it is listening.
+    try {
+      check_replay_log(*options_.readlog);
+    } catch (const std::exception& e) {
+      logger_.error(e.what());
+      throw DaemonError(ServeResult::bad_configuration, e.what());
+    }
     // Replaces a plugin's readlog too: -r names what the built-in one replays.
     registry_.add(drivers::readlog_driver_spec({.log = *options_.readlog,
                                                 .speed = options_.readlog_speed,
@@ -67,6 +76,7 @@ void Daemon::load() {
                             : config::ConfigFile::load(options_.config_path, load_options);
     for (const auto& warning : config.warnings()) logger_.warning(warning.to_string());
     core::instantiate_devices(config, registry_, devices_, clock, logger_);
+    core::check_devices(config, devices_);
     for (const auto& warning : config.unused_properties()) logger_.warning(warning.to_string());
     const auto served = devices_.all();
     if (options_.readlog && std::none_of(served.begin(), served.end(), [](const core::Device* device) {
@@ -75,7 +85,7 @@ void Daemon::load() {
       logger_.warning("-r " + *options_.readlog + ": no device of " + options_.config_path +
                       " has driver \"readlog\"; nothing is replayed");
     }
-    if (devices_.empty()) fail(ServeResult::bad_configuration, options_.config_path + ": no devices declared, nothing to serve");
+    check_served(devices_, options_.config_path);
     for (std::uint16_t port : config.ports()) {
       if (port == 0) {
         fail(ServeResult::bad_configuration, options_.config_path + ": a robot section with port 0; only -p 0 picks a free port");

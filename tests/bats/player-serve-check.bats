@@ -3,8 +3,19 @@
 
 load helpers
 
+# A Player log of one position line, and a map beside a copy of
+# post-hoc-localization.cfg: what its readlog (-r) and amcl devices need.
+write_replay_log() {
+  printf '## Player version 1.5 \n## File version 0.0.0 \n0000001000.000 h 6665 position 00 0000001000.000 +01.000 +02.000 +0.000 +0.000 +0.000 +0.000 0 \n' > "$1"
+}
+
 @test "--check lists the devices of a valid configuration and exits 0" {
-  run "$player_serve" --check "$repo_root/data/config/post-hoc-localization.cfg"
+  cp "$repo_root/data/config/post-hoc-localization.cfg" "$BATS_TEST_TMPDIR/"
+  { printf 'P2\n8 8\n255\n'; for _ in $(seq 1 64); do printf '254 '; done; printf '\n'; } > "$BATS_TEST_TMPDIR/intel-lab-map.pgm"
+  printf 'image: intel-lab-map.pgm\nresolution: 0.5\norigin: [-2.0, -2.0, 0.0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n' \
+    > "$BATS_TEST_TMPDIR/intel-lab-map.yaml"
+  write_replay_log "$BATS_TEST_TMPDIR/run.log"
+  run "$player_serve" --check -r "$BATS_TEST_TMPDIR/run.log" "$BATS_TEST_TMPDIR/post-hoc-localization.cfg"
   [ "$status" -eq 0 ]
   [[ "${lines[0]}" == *"post-hoc-localization.cfg: 3 devices, served on port 6665" ]]
   [[ "$output" =~ localize:0\ +driver\ amcl ]]
@@ -21,7 +32,8 @@ load helpers
 }
 
 @test "--check -p changes the port of devices outside robot sections" {
-  run "$player_serve" --check -p 7000 "$repo_root/data/config/replay.cfg"
+  write_replay_log "$BATS_TEST_TMPDIR/run.log"
+  run "$player_serve" --check -p 7000 -r "$BATS_TEST_TMPDIR/run.log" "$repo_root/data/config/replay.cfg"
   [ "$status" -eq 0 ]
   [[ "${lines[0]}" == *"served on port 7000" ]]
 }

@@ -5,7 +5,10 @@
 
 #include "config/config_file.hpp"
 #include "config/errors.hpp"
+#include "core/plugin.hpp"
+#include "daemon/check.hpp"
 #include "exit_status.hpp"
+#include "text/printable.hpp"
 
 namespace playerkit::serve {
 namespace {
@@ -29,16 +32,13 @@ std::string format_property(const config::Property& property) {
 
 }  // namespace
 
-int check_config(const std::string& path, std::uint16_t default_port,
-                 const std::function<bool(std::string_view)>& available, std::ostream& out,
-                 std::ostream& err) {
-  config::LoadOptions options;
-  options.default_port = default_port;
+int check_config(const daemon::ServeOptions& options, std::ostream& out, std::ostream& err) {
   try {
-    const auto config = config::ConfigFile::load(path, options);
-    for (const auto& warning : config.warnings()) err << warning.to_string() << "\n";
+    const auto checked = daemon::check_configuration(options);
+    for (const auto& warning : checked.warnings) err << warning << "\n";
+    const auto& config = checked.config;
     const auto& devices = config.devices();
-    out << path << ": " << devices.size() << (devices.size() == 1 ? " device" : " devices");
+    out << text::printable(options.config_path) << ": " << devices.size() << (devices.size() == 1 ? " device" : " devices");
     out << ", served on port";
     const auto ports = config.ports();
     if (ports.size() > 1) out << "s";
@@ -47,19 +47,24 @@ int check_config(const std::string& path, std::uint16_t default_port,
     for (const auto& device : devices) {
       const std::string name = device.interface_name + ":" + std::to_string(device.address.index);
       out << "  " << std::left << std::setw(14) << name << " driver " << device.driver;
-      if (available && !available(device.driver)) out << " (not in this build)";
       if (ports.size() > 1) out << ", port " << device.port;
       if (!device.robot_name.empty()) out << ", robot " << device.robot_name;
       if (device.alwayson) out << ", always on";
       out << "\n";
       for (const auto& property : config.section(device.section).properties()) {
         if (property.name == "driver" || property.name == "alwayson") continue;
-        out << "      " << format_property(property) << "\n";
+        out << "      " << text::printable(format_property(property)) << "\n";
       }
     }
     return tools::kExitOk;
   } catch (const config::ConfigError& e) {
     err << e.what() << "\n";
+    return tools::kExitUsage;
+  } catch (const core::PluginError& e) {
+    err << options.program_name << ": " << text::printable(e.what()) << "\n";
+    return tools::kExitFailure;
+  } catch (const std::runtime_error& e) {  // the -r log
+    err << options.program_name << ": " << text::printable(e.what()) << "\n";
     return tools::kExitUsage;
   }
 }

@@ -1,21 +1,18 @@
 #pragma once
-// `player-serve --check`: load a configuration and describe what it would serve,
-// without opening any port.
+// `player-serve --check`: everything serving would verify before accepting a
+// client (daemon::check_configuration: the -r log, the configuration, every
+// driver's options, files and the devices it needs), then what it would
+// serve. No port is opened, no hardware touched, no file written.
 
-#include <cstdint>
-#include <functional>
 #include <iosfwd>
-#include <string>
-#include <string_view>
+
+#include "daemon/serve.hpp"
 
 namespace playerkit::serve {
 
-// Prints the devices of the file to out, warnings to err. Drivers are checked
-// against Player 1.5's catalog, so a configuration written for 1.5 validates;
-// those `available` does not know are marked "not in this build". Returns the
-// exit status: 0 when the file is valid, 2 when it is not (the error goes to err).
-int check_config(const std::string& path, std::uint16_t default_port,
-                 const std::function<bool(std::string_view)>& available, std::ostream& out,
-                 std::ostream& err);
+// Prints the devices to out, warnings and errors to err. Returns the exit
+// status: 0 when serving could start, 2 when the configuration or the -r log
+// is wrong, 1 when a plugin cannot be loaded.
+int check_config(const daemon::ServeOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace playerkit::serve

@@ -7,10 +7,11 @@
 
 #include "check_config.hpp"
 #include "serve_options.hpp"
-#include "core/plugin.hpp"
 #include "daemon/serve.hpp"
 #include "exit_status.hpp"
+#include "parse_errors.hpp"
 #include "serve_exit_status.hpp"
+#include "text/printable.hpp"
 
 namespace tools = playerkit::tools;
 
@@ -22,7 +23,10 @@ constexpr const char* kExamples = R"(Examples:
   player-serve -p 0 robot.cfg          any free port; the log line says which
   player-serve -k secret robot.cfg     clients must authenticate with key "secret"
   player-serve -d ./libmydriver.so robot.cfg   load extra drivers from a plugin
-  player-serve --check robot.cfg       validate robot.cfg and list its devices
+  player-serve --check robot.cfg       check robot.cfg as serving would (drivers, their
+                                       options and files, the devices they need; no port,
+                                       no hardware) and list its devices
+  player-serve --check -r run.log replay.cfg   the same with the log to replay
   player-serve -r run.log -f 2 replay.cfg   replay run.log at twice its speed to the
                                        readlog devices of replay.cfg, e.g.
                                        position:0 ( driver "readlog" )
@@ -56,35 +60,24 @@ int main(int argc, char** argv) {
   app.add_option("-g", command_line.gazebo_id, "Gazebo server (not available in playerkit)");
   app.add_flag("-q,--quiet", command_line.quiet, "errors only");
   app.add_flag("-v,--verbose", command_line.verbose, "also debug messages (client traffic problems, set-up)");
-  app.add_flag("--check", command_line.check, "validate the configuration, list its devices, and exit");
+  app.add_flag("--check", command_line.check,
+               "check everything serving would before accepting clients, short of hardware and network "
+               "(the -r log, drivers, their options and files), list the devices, and exit");
 
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? tools::kExitOk : tools::kExitUsage;
+    return tools::report_parse_error(app, e, std::cerr);
   }
 
   playerkit::serve::ServeRequest request;
   try {
     request = playerkit::serve::make_serve_options(command_line);
   } catch (const tools::UsageError& e) {
-    std::cerr << "player-serve: " << e.what() << "\n";
+    std::cerr << "player-serve: " << playerkit::text::printable(e.what()) << "\n";
     return tools::kExitUsage;
   }
   const auto& options = request.options;
-  if (request.check_only) {
-    playerkit::core::Logger logger("player-serve");
-    logger.set_level(playerkit::core::LogLevel::kError);
-    try {
-      const auto registry = playerkit::daemon::load_drivers(options.plugins, logger);
-      return playerkit::serve::check_config(
-          options.config_path, options.port,
-          [&registry](std::string_view driver) { return registry.contains(driver); }, std::cout,
-          std::cerr);
-    } catch (const playerkit::core::PluginError& e) {
-      std::cerr << "player-serve: " << e.what() << "\n";
-      return tools::kExitFailure;
-    }
-  }
+  if (request.check_only) return playerkit::serve::check_config(options, std::cout, std::cerr);
   return tools::exit_status_for(playerkit::daemon::serve(options));
 }

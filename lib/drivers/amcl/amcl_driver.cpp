@@ -47,6 +47,17 @@ AmclDriver::~AmclDriver() {
   position_subscription_.reset();
 }
 
+void AmclDriver::check() {
+  const std::uint16_t port = device().key().port;
+  for (const auto& [interface, index] : {std::pair{protocol::kPositionCode, options_.position_index},
+                                         std::pair{protocol::kLaserCode, options_.laser_index}}) {
+    if (devices_.find(port, {interface, static_cast<std::uint16_t>(index)}) == nullptr) {
+      throw core::DriverError("amcl: no " + protocol::interface_name(interface) + ":" + std::to_string(index) +
+                              " device on port " + std::to_string(port) + " to localize with");
+    }
+  }
+}
+
 void AmclDriver::open() {
   const std::uint16_t port = device().key().port;
   core::Device* position =

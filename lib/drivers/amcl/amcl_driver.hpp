@@ -45,6 +45,8 @@ class AmclDriver final : public core::ThreadedDriver, private core::DeviceListen
   ~AmclDriver() override;
 
   core::RequestResult handle_request(const core::Request& request) override;
+  // Its position and laser devices exist (looked up again at set-up).
+  void check() override;
 
  protected:
   void open() override;

@@ -1,0 +1,46 @@
+#pragma once
+// `player-serve --check`: everything serve() verifies before it accepts a
+// client, short of opening hardware, sockets or output files. The same steps
+// as Daemon::load(), without binding a port:
+//
+//  * the -r log: readable, a Player text log (a CARMEN log is refused saying
+//    that player-log replays it), a first line to replay;
+//  * the configuration: syntax, declarations, drivers that exist in this
+//    build (built-in and plugins) and serve the declared interface;
+//  * every driver created: each reads and checks its options and the files it
+//    reads or writes (readlog's log, amcl's map, writelog's directory);
+//  * every driver's check(): the devices it needs (writelog's sources, amcl's
+//    position and laser) exist;
+//  * the whole: at least one device to serve.
+//
+// Device set-up (serial ports, remote servers, broadcast sockets) is not
+// tried: that needs the hardware and the network.
+
+#include <string>
+#include <vector>
+
+#include "config/config_file.hpp"
+#include "core/device_table.hpp"
+#include "daemon/serve.hpp"
+
+namespace playerkit::daemon {
+
+struct CheckedConfiguration {
+  config::ConfigFile config;
+  // "file:line:col: warning: ...": replaced declarations, options no driver read.
+  std::vector<std::string> warnings;
+};
+
+// Throws config::ConfigError (file:line:col, or the file for the whole),
+// std::runtime_error naming the -r log, core::PluginError.
+CheckedConfiguration check_configuration(const ServeOptions& options);
+
+// The -r log is one readlog can replay (drivers::first_replay_time). Throws
+// std::runtime_error naming the file.
+void check_replay_log(const std::string& path);
+
+// What no single declaration shows: something to serve. Throws
+// config::ConfigError naming the file.
+void check_served(const core::DeviceTable& devices, const std::string& config_path);
+
+}  // namespace playerkit::daemon
