@@ -1,6 +1,7 @@
 #include "algorithms/grid/occupancy_grid.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace playerkit::grid {
@@ -14,7 +15,18 @@ OccupancyGrid::OccupancyGrid(int width, int height, double resolution, Eigen::Ve
   if (!(resolution > 0.0) || !std::isfinite(resolution)) {
     throw std::invalid_argument("OccupancyGrid: resolution must be positive and finite");
   }
+  if (static_cast<std::int64_t>(width) * height > kMaxGridCells) {
+    throw GridTooLarge(width, height, too_many_cells_message(width, height));
+  }
   cells_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), fill);
+}
+
+std::string too_many_cells_message(std::int64_t width, std::int64_t height) {
+  const double millions = static_cast<double>(width) * static_cast<double>(height) / 1e6;
+  char figure[32];
+  std::snprintf(figure, sizeof figure, millions < 10 ? "%.1f" : "%.0f", millions);
+  return "a map of " + std::to_string(width) + " x " + std::to_string(height) + " cells (" + figure +
+         " million) is more than the limit of " + std::to_string(kMaxGridCells / 1'000'000) + " million";
 }
 
 OccupancyGrid OccupancyGrid::centred(int width, int height, double resolution, CellState fill) {

@@ -8,9 +8,37 @@
 
 #include <cstdint>
 #include <span>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace playerkit::grid {
+
+// The most cells a grid may have: 50 million, a 7071-cell square (350 m at
+// 5 cm, 70 m at 1 cm; the largest Radish maps are 2 million cells at 5 cm).
+// Memory grows with cells: 1 byte here, and localizing on the map adds about
+// 24 more at worst (4 for the distance map, 4 for the likelihood table, 16
+// per free cell for uniform sampling), so 1.2 GB at the limit; building a map
+// from scans takes about 6 (4 of log odds, 1 of scan marks, 1 for the grid).
+// Without it `amcl-offline map --resolution 0.0001` reached 6 GB.
+inline constexpr std::int64_t kMaxGridCells = 50'000'000;
+
+// A grid of more than kMaxGridCells cells was asked for. what() gives its size
+// (and, from a map builder, the resolution at which the area would fit).
+class GridTooLarge : public std::length_error {
+ public:
+  GridTooLarge(std::int64_t width, std::int64_t height, const std::string& message)
+      : std::length_error(message), width_(width), height_(height) {}
+  [[nodiscard]] std::int64_t width() const { return width_; }
+  [[nodiscard]] std::int64_t height() const { return height_; }
+
+ private:
+  std::int64_t width_;
+  std::int64_t height_;
+};
+
+// "a map of W x H cells (N million) is more than the limit of 50 million"
+std::string too_many_cells_message(std::int64_t width, std::int64_t height);
 
 enum class CellState : std::int8_t { free = -1, unknown = 0, occupied = 1 };
 
@@ -19,7 +47,7 @@ class OccupancyGrid {
   OccupancyGrid() = default;
   // `origin` is the world position of the outer corner of cell (0, 0), the
   // corner with the lowest x and y. Throws std::invalid_argument for a
-  // non-positive size or resolution.
+  // non-positive size or resolution, GridTooLarge over kMaxGridCells.
   OccupancyGrid(int width, int height, double resolution, Eigen::Vector2d origin,
                 CellState fill = CellState::unknown);
 

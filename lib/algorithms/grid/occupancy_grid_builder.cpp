@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <stdexcept>
 
 namespace playerkit::grid {
@@ -26,6 +28,12 @@ Eigen::Vector2i unpack(std::uint64_t key) {
 }
 
 bool is_probability(double p) { return p > 0.0 && p < 1.0; }
+
+std::string format_metres(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
 
 }  // namespace
 
@@ -80,6 +88,7 @@ void OccupancyGridBuilder::add_scan(const geometry::Pose2& laser_pose,
     high = high.cwiseMax(end_cell);
   }
   if (beams.empty()) return;
+  check_size(low, high);
 
   // Mark each cell once per scan in a window over the scan's bounding box
   // (every cell of a segment lies in the box of its end cells); a hit
@@ -129,6 +138,36 @@ void OccupancyGridBuilder::update_cell(const Eigen::Vector2i& cell, double log_o
     touched_min_ = touched_min_.cwiseMin(cell);
     touched_max_ = touched_max_.cwiseMax(cell);
   }
+}
+
+// Before the scan's window is allocated: the map so far with this scan and
+// the margin must fit kMaxGridCells (it only grows from here).
+void OccupancyGridBuilder::check_size(const Eigen::Vector2i& scan_low, const Eigen::Vector2i& scan_high) const {
+  const Eigen::Vector2i low = touched_any_ ? touched_min_.cwiseMin(scan_low) : scan_low;
+  const Eigen::Vector2i high = touched_any_ ? touched_max_.cwiseMax(scan_high) : scan_high;
+  const double resolution = parameters_.resolution;
+  const auto margin = static_cast<std::int64_t>(std::ceil(parameters_.margin / resolution));
+  const std::int64_t width = std::int64_t{high.x()} - low.x() + 1 + 2 * margin;
+  const std::int64_t height = std::int64_t{high.y()} - low.y() + 1 + 2 * margin;
+  if (width * height <= kMaxGridCells) return;
+  // The area in metres, and the finest resolution (two significant digits,
+  // rounded up) at which it fits.
+  const double width_m = static_cast<double>(high.x() - low.x() + 1) * resolution + 2 * parameters_.margin;
+  const double height_m = static_cast<double>(high.y() - low.y() + 1) * resolution + 2 * parameters_.margin;
+  const auto fits = [&](double r) {
+    return (std::ceil(width_m / r) + 2) * (std::ceil(height_m / r) + 2) <= static_cast<double>(kMaxGridCells);
+  };
+  double coarser = std::sqrt(width_m * height_m / static_cast<double>(kMaxGridCells));
+  const double step = std::pow(10.0, std::floor(std::log10(coarser)) - 1);
+  coarser = std::ceil(coarser / step) * step;
+  for (int i = 0; i < 1000 && !fits(coarser); ++i) coarser += step;
+  char area[96];
+  std::snprintf(area, sizeof area, "%.1f m x %.1f m", width_m, height_m);
+  char suggestion[32];
+  std::snprintf(suggestion, sizeof suggestion, "%.2g", coarser);
+  throw GridTooLarge(width, height,
+                     too_many_cells_message(width, height) + " at a resolution of " + format_metres(resolution) +
+                         " m (the area seen so far, " + area + ", fits at " + suggestion + " m or coarser)");
 }
 
 OccupancyGrid OccupancyGridBuilder::build() const {

@@ -44,7 +44,9 @@ class OccupancyGridBuilder {
   // min(max_range, max_usable_range, no_return_clear_range). Readings <= 0 or
   // NaN are ignored.
   // Within one scan each cell is updated at most once, and a cell some beam
-  // ends in counts as a hit even if other beams pass through it.
+  // ends in counts as a hit even if other beams pass through it. Throws
+  // GridTooLarge, before taking any memory for the scan, when the map would
+  // pass kMaxGridCells (its message names the resolution that would fit).
   void add_scan(const geometry::Pose2& laser_pose, std::span<const double> ranges, double angle_min,
                 double angle_increment, double max_range);
 
@@ -62,6 +64,9 @@ class OccupancyGridBuilder {
   using Tile = std::array<float, kTileSize * kTileSize>;  // log odds, 0 = never seen
 
   void update_cell(const Eigen::Vector2i& cell, double log_odds_change);
+  // Throws GridTooLarge when the map, with a scan spanning these cells, would
+  // pass kMaxGridCells.
+  void check_size(const Eigen::Vector2i& scan_low, const Eigen::Vector2i& scan_high) const;
 
   OccupancyMappingParameters parameters_;
   std::unordered_map<std::uint64_t, Tile> tiles_;

@@ -186,9 +186,39 @@ TEST(OccupancyGridBuilder, IgnoresInvalidReadingsAndRefusesToBuildFromNothing) {
   EXPECT_THROW((void)builder.build(), std::logic_error);
 }
 
+TEST(OccupancyGridBuilder, AResolutionTooFineIsRefusedNamingOneThatFits) {
+  // Ten beams reaching 5 m ahead: at 0.1 mm a cell, 50,000 cells across.
+  const std::vector<double> ranges(10, 5.0);
+  OccupancyMappingParameters fine;
+  fine.resolution = 0.0001;
+  OccupancyGridBuilder builder(fine);
+  std::string message;
+  try {
+    builder.add_scan({0.0, 0.0, 0.0}, ranges, -0.5, 0.1, 30.0);
+    FAIL() << "no error";
+  } catch (const GridTooLarge& error) {
+    message = error.what();
+  }
+  EXPECT_EQ(message.rfind("a map of ", 0), 0u) << message;
+  EXPECT_NE(message.find(" is more than the limit of 50 million at a resolution of 0.0001 m (the area seen so far, "),
+            std::string::npos)
+      << message;
+  // The resolution it suggests takes the same scan.
+  const auto at = message.find(" fits at ");
+  ASSERT_NE(at, std::string::npos) << message;
+  OccupancyMappingParameters suggested;
+  suggested.resolution = std::stod(message.substr(at + 9));
+  EXPECT_GT(suggested.resolution, fine.resolution);
+  EXPECT_LT(suggested.resolution, 0.01);
+  OccupancyGridBuilder coarser(suggested);
+  coarser.add_scan({0.0, 0.0, 0.0}, ranges, -0.5, 0.1, 30.0);
+  EXPECT_LE(static_cast<std::int64_t>(coarser.build().cells().size()), kMaxGridCells);
+}
+
 TEST(OccupancyGridBuilder, GrowsIntoNegativeAndFarCoordinates) {
   OccupancyMappingParameters parameters;
   parameters.margin = 0.5;
+  parameters.resolution = 0.2;  // 900 m x 500 m: 11 million cells (at 5 cm, over kMaxGridCells)
   OccupancyGridBuilder builder(parameters);
   const double ranges[] = {1.0};
   builder.add_scan({-500.0, -300.0, 0.0}, ranges, 0.0, 0.0, 10.0);
@@ -196,8 +226,8 @@ TEST(OccupancyGridBuilder, GrowsIntoNegativeAndFarCoordinates) {
   const OccupancyGrid grid = builder.build();
   EXPECT_EQ(grid.state_at_world({-499.0 + 0.01, -300.0 + 0.01}), CellState::occupied);
   EXPECT_EQ(grid.state_at_world({400.0 + 0.01, 201.0 + 0.01}), CellState::occupied);
-  EXPECT_NEAR(grid.origin().x(), -500.5, 0.051);
-  EXPECT_NEAR(grid.origin().y(), -300.5, 0.051);
+  EXPECT_NEAR(grid.origin().x(), -500.5, 0.201);
+  EXPECT_NEAR(grid.origin().y(), -300.5, 0.201);
 }
 
 TEST(OccupancyGridBuilder, RejectsBadParameters) {

@@ -14,6 +14,19 @@ TEST(OccupancyGrid, RejectsNonPositiveSizeOrResolution) {
   EXPECT_THROW(OccupancyGrid(5, 5, -0.1, {0, 0}), std::invalid_argument);
 }
 
+TEST(OccupancyGrid, RefusesMoreCellsThanTheLimitBeforeTakingMemory) {
+  EXPECT_NO_THROW(OccupancyGrid(1000, 1000, 0.05, Eigen::Vector2d::Zero()));
+  try {
+    OccupancyGrid(100'000, 100'000, 0.0001, Eigen::Vector2d::Zero());
+    FAIL() << "no error";
+  } catch (const GridTooLarge& error) {
+    EXPECT_EQ(error.width(), 100'000);
+    EXPECT_STREQ(error.what(), "a map of 100000 x 100000 cells (10000 million) is more than the limit of 50 million");
+  }
+  // Just over: 7072 x 7072 = 50,013,184 cells.
+  EXPECT_THROW(OccupancyGrid(7072, 7072, 0.05, Eigen::Vector2d::Zero()), GridTooLarge);
+}
+
 TEST(OccupancyGrid, FillsAndSetsCells) {
   OccupancyGrid grid(4, 3, 0.5, {1.0, 2.0}, CellState::free);
   EXPECT_EQ(grid.cells().size(), 12u);
