@@ -1,6 +1,7 @@
 #include "map/flat_yaml.hpp"
 
 #include "map/map_file_error.hpp"
+#include "text/printable.hpp"
 
 #include <cctype>
 
@@ -38,7 +39,7 @@ class LineReader {
     if (position_ == start) fail(start, "expected a key");
     std::string key(text_.substr(start, position_ - start));
     skip_blanks();
-    if (peek() != ':') fail(position_, "expected ':' after key '" + key + "'");
+    if (peek() != ':') fail(position_, "expected ':' after key '" + text::excerpt(key) + "'");
     ++position_;
     if (!at_end() && !is_blank(peek())) fail(position_, "expected a space after ':'");
     return key;
@@ -184,7 +185,7 @@ FlatYaml parse_flat_yaml(std::string_view text, const std::filesystem::path& fil
     const int key_column = static_cast<int>(reader.position()) + 1;
     std::string key = reader.read_key();
     YamlValue value = reader.read_value(key_column);
-    if (entries.contains(key)) reader.fail(0, "duplicate key '" + key + "'");
+    if (entries.contains(key)) reader.fail(0, "duplicate key '" + text::excerpt(key) + "'");
     entries.emplace(std::move(key), std::move(value));
   }
   return entries;

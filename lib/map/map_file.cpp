@@ -1,5 +1,6 @@
 #include "map/map_file.hpp"
 
+#include "map/image_header.hpp"
 #include "map/map_image.hpp"
 #include "map/map_yaml.hpp"
 
@@ -11,6 +12,9 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <system_error>
+
+#include "text/printable.hpp"
 
 namespace playerkit::map {
 namespace {
@@ -22,20 +26,51 @@ bool is_yaml(const std::filesystem::path& file) {
   return extension == ".yaml" || extension == ".yml";
 }
 
+// A map file must be a regular file: a directory or a device (/dev/zero)
+// is refused before it is read.
+void require_regular_file(const std::filesystem::path& file) {
+  std::error_code error;
+  const auto status = std::filesystem::status(file, error);
+  if (!std::filesystem::exists(status)) throw MapFileError(file, "no such file");
+  if (std::filesystem::is_directory(status)) throw MapFileError(file, "it is a directory, not a file");
+  if (!std::filesystem::is_regular_file(status)) {
+    throw MapFileError(file, "it is not a regular file (a device, a pipe or a socket)");
+  }
+}
+
 std::string read_text(const std::filesystem::path& file) {
+  require_regular_file(file);
   std::ifstream in(file, std::ios::binary);
   if (!in) throw MapFileError(file, "cannot open file");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text;
+  char block[4096];
+  while (in.read(block, sizeof block) || in.gcount() > 0) {
+    text.append(block, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxMapYamlBytes) {
+      throw MapFileError(file, "larger than " + std::to_string(kMaxMapYamlBytes) + " bytes: not a map description");
+    }
+  }
   if (in.bad()) throw MapFileError(file, "cannot read file");
   return text;
 }
 
+// Refuses an image whose header declares more pixels than a grid may have,
+// before it is decoded (decoding takes a byte per pixel at least).
+void check_image_size(const std::filesystem::path& image) {
+  if (const auto size = image_size_from_header(image)) {
+    if (size->width * size->height > grid::kMaxGridCells) {
+      throw MapFileError(image, grid::too_many_cells_message(size->width, size->height));
+    }
+  }
+}
+
 grid::OccupancyGrid load_yaml_map(const std::filesystem::path& yaml_file) {
   const MapYaml description = parse_map_yaml(read_text(yaml_file), yaml_file);
+  check_image_size(description.image);
   const std::optional<GreyImage> image = read_grey_image(description.image);
   if (!image) {
     throw MapFileError(yaml_file, description.image_line, description.image_column,
-                       std::string("cannot read image '") + description.image.string() + "'");
+                       std::string("cannot read image '") + text::excerpt(description.image.string()) + "'");
   }
   return grid_from_image(*image, description.resolution, description.origin,
                          {description.negate, description.occupied_threshold,
@@ -51,7 +86,8 @@ grid::OccupancyGrid load_image_map(const std::filesystem::path& image_file,
   if (!(resolution > 0.0) || !std::isfinite(resolution)) {
     throw MapFileError(image_file, "the resolution must be a positive number of m/pixel");
   }
-  if (!std::filesystem::exists(image_file)) throw MapFileError(image_file, "no such file");
+  require_regular_file(image_file);
+  check_image_size(image_file);
   const std::optional<GreyImage> image = read_grey_image(image_file);
   if (!image) throw MapFileError(image_file, "cannot read as an image");
   // Player 1.5 (manual 7.3): the world origin is the centre of the map.
@@ -63,7 +99,11 @@ grid::OccupancyGrid load_image_map(const std::filesystem::path& image_file,
 }  // namespace
 
 grid::OccupancyGrid load_map(const std::filesystem::path& file, const MapLoadOptions& options) {
-  return is_yaml(file) ? load_yaml_map(file) : load_image_map(file, options);
+  try {
+    return is_yaml(file) ? load_yaml_map(file) : load_image_map(file, options);
+  } catch (const grid::GridTooLarge& error) {  // an image whose header was not read here
+    throw MapFileError(file, error.what());
+  }
 }
 
 void save_map(const grid::OccupancyGrid& grid, const std::filesystem::path& pgm_file) {

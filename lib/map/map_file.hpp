@@ -5,10 +5,16 @@
 #include "algorithms/grid/occupancy_grid.hpp"
 #include "map/map_file_error.hpp"
 
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 
 namespace playerkit::map {
+
+// A ROS map description is a few lines (~150 bytes); a larger .yaml is not
+// read. Images may have at most grid::kMaxGridCells pixels, checked from a
+// PNM or PNG header before decoding (docs/limits.md).
+inline constexpr std::size_t kMaxMapYamlBytes = std::size_t{64} << 10;
 
 struct MapLoadOptions {
   std::optional<double> resolution;   // m/pixel; required for a plain image (Player's map_scale), ignored for YAML

@@ -2,6 +2,7 @@
 
 #include "map/flat_yaml.hpp"
 #include "map/map_file_error.hpp"
+#include "text/printable.hpp"
 
 #include <cctype>
 #include <charconv>
@@ -45,7 +46,7 @@ class FieldReader {
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), result);
     if (error != std::errc{} || end != text.data() + text.size() || !std::isfinite(result)) {
       fail(scalar.line, scalar.column,
-           std::string(key) + " must be a number, got '" + scalar.text + "'");
+           std::string(key) + " must be a number, got '" + text::excerpt(scalar.text) + "'");
     }
     return result;
   }
@@ -125,7 +126,7 @@ MapYaml parse_map_yaml(std::string_view text, const std::filesystem::path& yaml_
   } else if (negate.text == "1" || negate.text == "true") {
     description.negate = true;
   } else {
-    fields.fail(negate.line, negate.column, "negate must be 0 or 1, got '" + negate.text + "'");
+    fields.fail(negate.line, negate.column, "negate must be 0 or 1, got '" + text::excerpt(negate.text) + "'");
   }
 
   description.occupied_threshold = fields.number("occupied_thresh");
@@ -146,10 +147,10 @@ MapYaml parse_map_yaml(std::string_view text, const std::filesystem::path& yaml_
     const YamlScalar& name = fields.scalar("mode", *mode);
     if (name.text == "scale" || name.text == "raw") {
       fields.fail(name.line, name.column,
-                  "mode '" + name.text + "' is not supported: only trinary maps can be loaded");
+                  "mode '" + text::excerpt(name.text) + "' is not supported: only trinary maps can be loaded");
     }
     if (name.text != "trinary") {
-      fields.fail(name.line, name.column, "unknown mode '" + name.text + "'");
+      fields.fail(name.line, name.column, "unknown mode '" + text::excerpt(name.text) + "'");
     }
   }
   return description;

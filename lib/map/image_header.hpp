@@ -1,0 +1,23 @@
+#pragma once
+// Internal: an image's size from its header, read before the image is
+// decoded, so that a map image declaring billions of pixels is refused
+// without taking the memory (decoding takes a byte per pixel at least).
+
+#include <filesystem>
+#include <optional>
+#include <string_view>
+
+namespace playerkit::map {
+
+struct ImageSize {
+  long long width = 0;
+  long long height = 0;
+};
+
+// The width and height declared by a PNM (P1-P6: Player's maps) or PNG
+// header; nullopt for other formats or a header that cannot be read (the
+// decoder then reports those).
+std::optional<ImageSize> image_size_from_header_bytes(std::string_view header);
+std::optional<ImageSize> image_size_from_header(const std::filesystem::path& file);
+
+}  // namespace playerkit::map
