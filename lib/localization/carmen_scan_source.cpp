@@ -3,6 +3,7 @@
 #include <charconv>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <variant>
 
 #include "localization/logged_scan_source.hpp"
@@ -43,10 +44,11 @@ std::optional<double> positive_number(const std::string& text) {
 
 class CarmenScanSource final : public LoggedScanSource {
  public:
-  CarmenScanSource(const std::filesystem::path& log, const LoggedScanReaderOptions& options)
+  CarmenScanSource(const std::filesystem::path& log, const LoggedScanReaderOptions& options,
+                   std::shared_ptr<const log::LogClock> clock)
       : options_(options),
         in_(log::open_log_input(log)),
-        reader_(*in_, log.string(), {.strict = options.strict}),
+        reader_(*in_, log.string(), {.strict = options.strict, .clock = std::move(clock)}),
         name_(log.string()) {}
 
   std::optional<LoggedScan> next() override {
@@ -104,8 +106,9 @@ class CarmenScanSource final : public LoggedScanSource {
 }  // namespace
 
 std::unique_ptr<LoggedScanSource> make_carmen_scan_source(const std::filesystem::path& log,
-                                                          const LoggedScanReaderOptions& options) {
-  return std::make_unique<CarmenScanSource>(log, options);
+                                                          const LoggedScanReaderOptions& options,
+                                                          std::shared_ptr<const log::LogClock> clock) {
+  return std::make_unique<CarmenScanSource>(log, options, std::move(clock));
 }
 
 }  // namespace playerkit::localization

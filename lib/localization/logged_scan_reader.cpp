@@ -1,13 +1,15 @@
 #include "localization/logged_scan_reader.hpp"
 
 #include "localization/logged_scan_source.hpp"
+#include "log/log_clock_reader.hpp"
 
 namespace playerkit::localization {
 
 LoggedScanReader::LoggedScanReader(const std::filesystem::path& log, LoggedScanReaderOptions options)
     : format_(log::detect_log_format(log)),
-      source_(format_ == log::LogFormat::kPlayer ? make_player_scan_source(log, options)
-                                                 : make_carmen_scan_source(log, options)) {}
+      clock_(log::audit_log_times(log)),
+      source_(format_ == log::LogFormat::kPlayer ? make_player_scan_source(log, options, clock_)
+                                                 : make_carmen_scan_source(log, options, clock_)) {}
 
 LoggedScanReader::~LoggedScanReader() = default;
 LoggedScanReader::LoggedScanReader(LoggedScanReader&&) noexcept = default;

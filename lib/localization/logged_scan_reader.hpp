@@ -18,6 +18,9 @@
 //           else the latest ODOM before it; truth: the record's laser pose
 //           (x y theta): true for SLAM-corrected logs such as Radish's.
 //           time: ipc_timestamp.
+// Times: a log whose times are unusable is read by its LogClock
+// (log/log_clock.hpp; a warning on stderr says so): the replaced scans get
+// interpolated times, or file order on a synthetic clock.
 // Max range: CARMEN PARAM robot_front_laser_max / robot_rear_laser_max when
 // the log has it, else the record's laser config (FLASER: CARMEN's guess, 80
 // m, below the 81.83 m no-return readings); Player: the option.
@@ -29,6 +32,7 @@
 #include <optional>
 
 #include "localization/logged_scan.hpp"
+#include "log/log_clock.hpp"
 #include "log/log_format_detection.hpp"
 
 namespace playerkit::localization {
@@ -56,12 +60,15 @@ class LoggedScanReader {
   std::optional<LoggedScan> next();
 
   log::LogFormat format() const { return format_; }
+  // How the log's times were judged (synthetic(): scan times are file order).
+  const log::LogClock& clock() const { return *clock_; }
   std::size_t malformed_lines() const;
   std::size_t scans_without_odometry() const { return scans_without_odometry_; }
   std::size_t scans_without_truth() const { return scans_without_truth_; }
 
  private:
   log::LogFormat format_;
+  std::shared_ptr<const log::LogClock> clock_;
   std::unique_ptr<LoggedScanSource> source_;
   std::size_t scans_without_odometry_ = 0;
   std::size_t scans_without_truth_ = 0;

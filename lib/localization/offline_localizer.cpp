@@ -78,6 +78,7 @@ LocalizationSummary localize_log(
     on_scan(result, *logged);
   }
   summary.scans_without_odometry = reader.scans_without_odometry();
+  summary.synthetic_times = reader.clock().synthetic();
   summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   return summary;
 }

@@ -49,6 +49,7 @@ struct LocalizationSummary {
   std::size_t laser_updates = 0;
   std::size_t scans_without_odometry = 0;  // skipped: nothing to move the filter
   double log_seconds = 0;                  // last scan time - first scan time
+  bool synthetic_times = false;            // the log had no usable times: log_seconds is file order
   double wall_seconds = 0;
   [[nodiscard]] double real_time_factor() const { return wall_seconds > 0 ? log_seconds / wall_seconds : 0; }
 };

@@ -3,6 +3,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <variant>
 
 #include "log/text_log_tokens.hpp"
@@ -41,8 +42,9 @@ LoggedScan scan_from_laser(const protocol::Message& message, double time, double
 
 class PlayerScanSource final : public LoggedScanSource {
  public:
-  PlayerScanSource(const std::filesystem::path& log, const LoggedScanReaderOptions& options)
-      : options_(options), in_(log::open_log_input(log)), name_(log.string()) {}
+  PlayerScanSource(const std::filesystem::path& log, const LoggedScanReaderOptions& options,
+                   std::shared_ptr<const log::LogClock> clock)
+      : options_(options), clock_(std::move(clock)), in_(log::open_log_input(log)), name_(log.string()) {}
 
   std::optional<LoggedScan> next() override {
     std::string line;
@@ -69,8 +71,11 @@ class PlayerScanSource final : public LoggedScanSource {
     log::LogLine parsed;
     try {
       parsed = log::parse_log_line(line, name_, line_number_, version_);
-      if (const auto* data = std::get_if<log::DataLine>(&parsed)) {
-        if (data->device) return take_data(*data, line);
+      if (std::holds_alternative<log::SyncLine>(parsed)) {
+        ++timed_lines_;
+      } else if (const auto* data = std::get_if<log::DataLine>(&parsed)) {
+        const std::size_t ordinal = timed_lines_++;
+        if (data->device) return take_data(*data, line, ordinal);
       } else if (const auto* header = std::get_if<log::HeaderLine>(&parsed)) {
         take_header(*header);
       }
@@ -95,14 +100,16 @@ class PlayerScanSource final : public LoggedScanSource {
     version_ = *version;
   }
 
-  std::optional<LoggedScan> take_data(const log::DataLine& data, const std::string& line) {
+  // `ordinal` counts sync and data lines, as the log's clock does.
+  std::optional<LoggedScan> take_data(const log::DataLine& data, const std::string& line, std::size_t ordinal) {
     const auto interface = data.device->interface;
     const auto index = data.device->index;
     if (interface == protocol::kLaserCode && index == options_.laser_index) {
       if (data.message.payload.empty()) return std::nullopt;  // readlog's placeholder
       auto finished = finish_pending();
-      PendingScan next{scan_from_laser(data.message, data.data_time.seconds(), options_.default_max_range),
-                       data.data_time};
+      // Poses pair by the logged data times; the scan's own time comes from the log's clock.
+      const double time = clock_->time_of(ordinal, data.data_time.seconds());
+      PendingScan next{scan_from_laser(data.message, time, options_.default_max_range), data.data_time};
       next.scan.odometry = latest_odometry_;
       next.scan.truth = latest_truth_;
       pending_ = std::move(next);
@@ -138,9 +145,11 @@ class PlayerScanSource final : public LoggedScanSource {
   }
 
   LoggedScanReaderOptions options_;
+  std::shared_ptr<const log::LogClock> clock_;
   std::unique_ptr<log::LogInput> in_;
   std::string name_;
   int line_number_ = 0;
+  std::size_t timed_lines_ = 0;
   std::size_t malformed_lines_ = 0;
   bool is_version_error_ = false;
   log::LogFormatVersion version_ = log::LogFormatVersion::k0_0_0;
@@ -152,8 +161,9 @@ class PlayerScanSource final : public LoggedScanSource {
 }  // namespace
 
 std::unique_ptr<LoggedScanSource> make_player_scan_source(const std::filesystem::path& log,
-                                                          const LoggedScanReaderOptions& options) {
-  return std::make_unique<PlayerScanSource>(log, options);
+                                                          const LoggedScanReaderOptions& options,
+                                                          std::shared_ptr<const log::LogClock> clock) {
+  return std::make_unique<PlayerScanSource>(log, options, std::move(clock));
 }
 
 }  // namespace playerkit::localization

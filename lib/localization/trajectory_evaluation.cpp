@@ -141,6 +141,7 @@ std::string TrajectoryEvaluation::to_json(int indent) const {
   const nlohmann::json json{
       {"estimates", estimates},
       {"matched", matched},
+      {"matched_by", matched_by_scan_order ? "scan_order" : "time"},
       {"all", statistics_json(all)},
       {"converged", converged()},
       {"convergence_time_s", optional_json(convergence_time_s)},

@@ -52,6 +52,9 @@ struct TrajectoryEvaluation {
   // From the first row of an episode to the first row back within the
   // bounds (or the last row): tells a one-scan blip from a real loss.
   double longest_lost_s = 0;
+  // Set by the caller when the estimate was paired by scan order
+  // (scan_order_matching.hpp): its times are the truth's file-order clock.
+  bool matched_by_scan_order = false;
   EvaluationOptions options;
 
   bool converged() const { return convergence_time_s.has_value(); }
