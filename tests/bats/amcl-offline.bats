@@ -179,3 +179,117 @@ PY
   # Nothing half-written was left anywhere.
   [ -z "$(ls | grep '\.tmp-' || true)" ]
 }
+
+# ---- amcl-offline plan (wavefront): on the Intel lab map made from the log,
+# start and goal where the robot really was. The map is made once per file.
+
+plan_intel_map() {
+  local map="$BATS_FILE_TMPDIR/plan-intel.yaml"
+  [ -f "$map" ] || "$amcl_offline" map "$intel" -o "$BATS_FILE_TMPDIR/plan-intel.pgm" --resolution 0.05 2>/dev/null
+  echo "$map"
+}
+
+# The log's true poses as a localize-style track: time,x,y,yaw.
+plan_truth_track() {
+  { echo "time,x,y,yaw"; zcat "$intel" | awk '$1 == "FLASER" { n = $2; print $(NF-2) "," $(n+3) "," $(n+4) "," $(n+5) }'; } >"$1"
+}
+
+@test "plan: csv waypoints from the start to the goal on the Intel map, every row two numbers" {
+  map="$(plan_intel_map)"
+  run --separate-stderr "$amcl_offline" plan --map "$map" --start 12.3586,-18.8004 --goal 0.6,-0.03
+  [ "$status" -eq 0 ]
+  [ "${lines[0]}" = "x,y" ]
+  [ "${lines[1]}" = "12.3586,-18.8004" ]
+  [ "${lines[${#lines[@]}-1]}" = "0.6000,-0.0300" ]
+  [ "${#lines[@]}" -ge 4 ]  # the corridors turn
+  printf '%s\n' "${lines[@]:1}" | awk -F, 'NF != 2 || $1 !~ /^-?[0-9]+\.[0-9]+$/ || $2 !~ /^-?[0-9]+\.[0-9]+$/ { exit 1 }'
+  [[ "$stderr" == *"waypoints"*"closest approach"*"(keeping 0.30 m)"* ]]
+}
+
+@test "plan: json carries waypoints, length and a clearance of at least radius + safety; --plot writes a PNG" {
+  map="$(plan_intel_map)"
+  run --separate-stderr "$amcl_offline" plan --map "$map" --start 12.3586,-18.8004 --goal 0.6,-0.03 \
+    --robot-radius 0.2 --safety 0.1 --format json -o plan.json --plot plan.png
+  [ "$status" -eq 0 ]
+  [ "$(head -c 4 plan.png | od -An -c | tr -d ' ')" = '211PNG' ]
+  python3 -c 'import json, math
+d = json.load(open("plan.json"))
+w = d["waypoints"]
+assert w[0] == [12.3586, -18.8004] and w[-1] == [0.6, -0.03], w
+length = sum(math.dist(a, b) for a, b in zip(w, w[1:]))
+assert abs(length - d["length_m"]) < 1e-3, (length, d["length_m"])
+assert d["length_m"] > math.dist(w[0], w[-1])
+assert d["required_clearance_m"] == 0.3 and d["min_clearance_m"] >= 0.3 - 1e-4, d'
+}
+
+@test "plan: --track --at starts at the last estimate at or before that time" {
+  map="$(plan_intel_map)"
+  plan_truth_track track.csv
+  expected="$(awk -F, 'NR > 1 && $1 <= 500 { p = sprintf("%.4f,%.4f", $2, $3) } END { print p }' track.csv)"
+  run --separate-stderr "$amcl_offline" plan --map "$map" --track track.csv --at 500 --goal 0.6,-0.03
+  [ "$status" -eq 0 ]
+  [ "${lines[1]}" = "$expected" ]
+  run --separate-stderr "$amcl_offline" plan --map "$map" --track track.csv --at 1 --goal 0.6,-0.03
+  [ "$status" -eq 1 ]
+  [[ "$stderr" == *"track.csv: no estimate at or before 1 s"* ]]
+}
+
+@test "plan --compare: the driven path against the plan between its ends, text and json" {
+  map="$(plan_intel_map)"
+  plan_truth_track track.csv
+  head -n 300 track.csv >part.csv
+  run --separate-stderr "$amcl_offline" plan --map "$map" --track part.csv --compare --plot compare.png
+  [ "$status" -eq 0 ]
+  [[ "${lines[1]}" == "driven "* ]]
+  [[ "${lines[2]}" == "planned "* ]]
+  [[ "$output" == *"driven/planned length"* ]]
+  [ "$(head -c 4 compare.png | od -An -c | tr -d ' ')" = '211PNG' ]
+  "$amcl_offline" plan --map "$map" --track part.csv --compare --format json 2>/dev/null >compare.json
+  python3 -c 'import csv, json, math
+d = json.load(open("compare.json"))
+rows = [(float(r["x"]), float(r["y"])) for r in csv.DictReader(open("part.csv"))]
+driven = sum(math.dist(a, b) for a, b in zip(rows, rows[1:]))
+assert abs(d["driven"]["length_m"] - driven) < 1e-3, (d, driven)
+assert d["driven"]["estimates"] == len(rows)
+w = d["planned"]["waypoints"]
+assert math.dist(w[0], rows[0]) < 1e-3 and math.dist(w[-1], rows[-1]) < 1e-3
+assert abs(d["length_ratio"] - d["driven"]["length_m"] / d["planned"]["length_m"]) < 1e-3
+assert d["driven"]["length_m"] > d["planned"]["length_m"] and d["planned"]["min_clearance_m"] >= 0.3 - 1e-4, d'
+}
+
+@test "plan: no path exits 1 saying why; bad flags exit 2" {
+  map="$(plan_intel_map)"
+  run --separate-stderr "$amcl_offline" plan --map "$map" --start 0.6,-0.03 --goal 500,0
+  [ "$status" -eq 1 ]
+  [[ "$stderr" == *"no path from (0.60, -0.03) to (500.00, 0.00): goal is outside the map"* ]]
+  run --separate-stderr "$amcl_offline" plan --map "$map" --start -19,-23 --goal 0.6,-0.03
+  [ "$status" -eq 1 ]
+  [[ "$stderr" == *"start is in an unknown cell"* ]]
+  run --separate-stderr "$amcl_offline" plan --map "$map" --start 0.6,-0.03 --goal 12.3586,-18.8004 --robot-radius 1.5
+  [ "$status" -eq 1 ]
+  [[ "$stderr" == *"start is "*" m from an occupied or unknown cell, closer than 1.65 m"* ]]
+  [ -z "$output" ]
+
+  # Two rooms with no door between them (a 20 x 10 PGM, 0.1 m per pixel).
+  python3 -c 'import sys
+rows = [[0 if c == 10 else 255 for c in range(20)] for r in range(10)]
+sys.stdout.write("P2 20 10 255\n" + "\n".join(" ".join(map(str, r)) for r in rows) + "\n")' >rooms.pgm
+  run --separate-stderr "$amcl_offline" plan --map rooms.pgm --scale 0.1 --start -0.5,0 --goal 0.5,0 --robot-radius 0.1 --safety 0
+  [ "$status" -eq 1 ]
+  [[ "$stderr" == *"the goal cannot be reached: no path keeps 0.10 m"* ]]
+
+  run --separate-stderr "$amcl_offline" plan --map "$map" --start 0.6,-0.03
+  [ "$status" -eq 2 ]
+  [[ "$stderr" == *"--goal X,Y"* ]]
+  run --separate-stderr "$amcl_offline" plan --map "$map" --start 0.6 --goal 1,1
+  [ "$status" -eq 2 ]
+  run --separate-stderr "$amcl_offline" plan --map "$map" --start 0,0 --track t.csv --at 3 --goal 1,1
+  [ "$status" -eq 2 ]
+  run --separate-stderr "$amcl_offline" plan --map "$map" --start 0,0 --goal 1,1 --format xml
+  [ "$status" -eq 2 ]
+  run --separate-stderr "$amcl_offline" plan --map "$map" --start 0,0 --goal 1,1 -o "$map"
+  [ "$status" -eq 2 ]
+  run "$amcl_offline" plan --help
+  [ "$status" -eq 0 ]
+  [[ "$output" == *"Exit status: 0 done; 1 no path"* ]]
+}

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include "commands.hpp"
+#include "plan_command.hpp"
 #include "stop_signals.hpp"
 
 namespace {
@@ -118,6 +119,23 @@ int main(int argc, char** argv) {
   eval_app->add_option("--truth", eval.truth, "a log with true poses, or a CSV with time,x,y,yaw")->required();
   eval_app->add_flag("--json", eval.json, "one JSON object");
 
+  offline::PlanCommand plan;
+  auto* plan_app = app.add_subcommand("plan", "a path on a map keeping robot radius + safety from walls and unknown space");
+  plan_app->add_option("--map", plan.map, "map image or ROS .yaml")->required();
+  plan_app->add_option("--scale", plan.scale, "metres per pixel of a map image");
+  plan_app->add_flag("--negate", plan.negate, "map image: white is occupied");
+  plan_app->add_option("--start", plan.start, "X,Y in metres");
+  plan_app->add_option("--goal", plan.goal, "X,Y in metres");
+  plan_app->add_option("--track", plan.track, "a localize CSV: with --at, its estimate then is the start");
+  plan_app->add_option("--at", plan.at, "T: the last estimate of --track at or before T seconds");
+  plan_app->add_flag("--compare", plan.compare, "the path of --track against the plan between its ends");
+  plan_app->add_option("--robot-radius", plan.robot_radius, "metres")->capture_default_str();
+  plan_app->add_option("--safety", plan.safety, "metres kept beyond the radius")->capture_default_str();
+  plan_app->add_option("--format", plan.format, "csv (default) or json; with --compare text (default) or json");
+  plan_app->add_option("-o,--output", plan.output, "where the output goes (- for stdout)")->capture_default_str();
+  plan_app->add_option("--plot", plan.plot, "PNG of the map, the path(s), start and goal");
+  plan_app->footer(offline::kPlanHelpFooter);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -130,5 +148,6 @@ int main(int argc, char** argv) {
     localize.progress = isatty(STDERR_FILENO) == 1;
     return guarded([&] { return offline::run_localize(offline::make_localize_options(localize), std::cout, std::cerr); });
   }
+  if (plan_app->parsed()) return guarded([&] { return offline::run_plan(offline::make_plan_options(plan), std::cout, std::cerr); });
   return guarded([&] { return offline::run_eval(eval, std::cout, std::cerr); });
 }
