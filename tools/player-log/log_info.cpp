@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "log/carmen_log_reader.hpp"
+#include "log/log_clock_reader.hpp"
 #include "log/log_input.hpp"
 #include "log/text_log_reader.hpp"
 #include "protocol/device_address.hpp"
@@ -58,18 +59,24 @@ std::string format_number(const char* pattern, double value) {
 }  // namespace
 
 std::optional<double> StreamSummary::rate() const {
-  if (count < 2 || last <= first) return std::nullopt;
-  return static_cast<double>(count - 1) / (last - first);
+  if (!rated || count < 2 || last <= first) return std::nullopt;
+  const double rate = static_cast<double>(count - 1) / (last - first);
+  if (rate > log::LogClock::kMaxRateHz) return std::nullopt;  // not a rate: times the clock kept anyway
+  return rate;
 }
 
 LogSummary summarize_log(const std::filesystem::path& path, bool strict, Progress& progress) {
   LogSummary summary;
   summary.file = path.string();
   summary.format = detect_log_format(path);
+  const auto clock = log::audit_log_times(path);
+  summary.time_repair = clock->repair();
+  summary.unusable_times = clock->unusable();
+  summary.time_note = clock->describe();
   auto in = log::open_log_input(path);
   Tally tally(summary);
   if (summary.format == LogFormat::kPlayer) {
-    log::TextLogReader reader(*in, path.string(), {.strict = strict});
+    log::TextLogReader reader(*in, path.string(), {.strict = strict, .clock = clock});
     while (auto line = reader.next()) {
       progress.tick();
       if (const auto* data = std::get_if<log::DataLine>(&*line)) {
@@ -84,7 +91,7 @@ LogSummary summarize_log(const std::filesystem::path& path, bool strict, Progres
     summary.malformed = reader.malformed_count();
     summary.malformed_texts = reader.malformed_lines();
   } else {
-    log::CarmenLogReader reader(*in, path.string(), {.strict = strict});
+    log::CarmenLogReader reader(*in, path.string(), {.strict = strict, .clock = clock});
     while (auto record = reader.next()) {
       progress.tick();
       const auto stamp = std::visit([](const auto& r) { return r.stamp; }, *record);
@@ -95,6 +102,7 @@ LogSummary summarize_log(const std::filesystem::path& path, bool strict, Progres
       else keyword = std::string(log::carmen_laser_keyword(std::get<log::CarmenLaser>(*record).kind));
       tally.add(keyword, stamp.logger_timestamp, keyword != "PARAM");
     }
+    if (auto param = summary.streams.find("PARAM"); param != summary.streams.end()) param->second.rated = false;
     summary.unknown = reader.unknown_keywords();
     summary.malformed = reader.malformed_lines();
     summary.malformed_texts = reader.malformed_messages();
@@ -112,6 +120,8 @@ void print_summary(const LogSummary& summary, std::ostream& out) {
   } else {
     out << "span:      (no messages)\n";
   }
+  // "... using file order with a synthetic 10 Hz clock" or "... interpolating ...".
+  if (!summary.time_note.empty()) out << "times:     " << summary.time_note << "\n";
   out << "messages:  " << summary.messages << "\n";
   out << (summary.format == LogFormat::kPlayer ? "devices:\n" : "records:\n");
   for (const auto& [name, stream] : summary.streams) {
@@ -143,6 +153,15 @@ nlohmann::json summary_json(const LogSummary& summary) {
   json["start"] = summary.start ? nlohmann::json(*summary.start) : nlohmann::json();
   json["end"] = summary.end ? nlohmann::json(*summary.end) : nlohmann::json();
   json["duration"] = summary.start ? nlohmann::json(*summary.end - *summary.start) : nlohmann::json();
+  const char* repair = summary.time_repair == log::LogTimeRepair::kSynthetic      ? "synthetic"
+                       : summary.time_repair == log::LogTimeRepair::kInterpolated ? "interpolated"
+                                                                                  : "none";
+  json["times"] = {{"repair", repair},
+                   {"unusable", summary.unusable_times},
+                   {"synthetic_rate_hz", summary.time_repair == log::LogTimeRepair::kSynthetic
+                                             ? nlohmann::json(log::LogClock::kSyntheticRateHz)
+                                             : nlohmann::json()},
+                   {"note", summary.time_note}};
   auto& streams = json[summary.format == LogFormat::kPlayer ? "devices" : "records"];
   streams = nlohmann::json::object();
   for (const auto& [name, stream] : summary.streams) {

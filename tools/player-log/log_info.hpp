@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "log/log_clock.hpp"
 #include "log_tool.hpp"
 
 namespace playerkit::plog {
@@ -18,7 +19,9 @@ struct StreamSummary {
   std::size_t count = 0;
   double first = 0;  // s, the log's time (Player token 0, CARMEN logger_timestamp)
   double last = 0;
-  // Messages per second over the stream's own span; nullopt under two messages.
+  bool rated = true;  // false for CARMEN's PARAM: configuration, not a stream
+  // Messages per second over the stream's own span; nullopt under two
+  // messages, for streams not rated, or for a rate no log can have.
   [[nodiscard]] std::optional<double> rate() const;
 };
 
@@ -41,6 +44,11 @@ struct LogSummary {
   std::size_t out_of_order = 0;   // timed lines earlier than the latest time before them
   std::size_t malformed = 0;
   std::vector<std::string> malformed_texts;
+  // How the log's times were judged (log/log_clock.hpp); times above are
+  // the repaired ones.
+  log::LogTimeRepair time_repair = log::LogTimeRepair::kNone;
+  std::size_t unusable_times = 0;
+  std::string time_note;  // LogClock::describe(), "" when every time was usable
 
   static constexpr std::size_t kKeptGaps = 5;
 };

@@ -35,10 +35,41 @@ TEST(LogInfo, CountsTheIntelLog) {
     EXPECT_GE(summary.largest_gaps[i - 1].seconds, summary.largest_gaps[i].seconds);
   }
   EXPECT_TRUE(summary.streams.at("FLASER").rate().has_value());
-  // `awk '($1=="ODOM"||$1=="FLASER"){t=$NF+0; if (n && t<m) b++; else m=t; n++}'`: the
-  // corrected poses written at time 0 after the scans.
-  EXPECT_EQ(summary.out_of_order, 2619u);
+  // `awk '($1=="ODOM"||$1=="FLASER"){t=$NF+0; if (n && t<m) b++; else m=t; n++}'` counts 2619
+  // lines going back; the corrected poses written after the scans at time 0 (or garbage) go
+  // back by more than 1 s, one per scan, and are interpolated (log/log_clock.hpp). What is left
+  // are ODOM lines up to 1 s behind, kept as logged.
+  EXPECT_EQ(summary.time_repair, log::LogTimeRepair::kInterpolated);
+  EXPECT_EQ(summary.unusable_times, 910u);
+  EXPECT_GT(summary.out_of_order, 0u);
+  EXPECT_LT(summary.out_of_order, 2619u);
   EXPECT_LT(summary.largest_gaps[0].seconds, 60.0);
+}
+
+TEST(LogInfo, OrebroHasNoUsableTimesAndGetsSaneRates) {
+  // Every scan stamped 0, the odometry with garbage (tests/data/radish/PROVENANCE.md).
+  const auto summary = summarize(kRadish / "orebro-corrected.log.gz");
+  EXPECT_EQ(summary.time_repair, log::LogTimeRepair::kSynthetic);
+  EXPECT_EQ(summary.unusable_times, 492u);
+  EXPECT_NE(summary.time_note.find("synthetic 10 Hz clock"), std::string::npos);
+  EXPECT_EQ(summary.streams.at("FLASER").count, 237u);
+  EXPECT_EQ(summary.streams.at("ODOM").count, 255u);
+  EXPECT_EQ(summary.out_of_order, 0u);
+  ASSERT_TRUE(summary.start && summary.end);
+  EXPECT_DOUBLE_EQ(*summary.end - *summary.start, 491 / log::LogClock::kSyntheticRateHz);
+  for (const char* stream : {"FLASER", "ODOM"}) {
+    const auto rate = summary.streams.at(stream).rate();
+    ASSERT_TRUE(rate) << stream;
+    EXPECT_GT(*rate, 0.0) << stream;
+    EXPECT_LE(*rate, log::LogClock::kSyntheticRateHz) << stream;
+  }
+}
+
+TEST(LogInfo, ParamLinesHaveNoRate) {
+  // Freiburg 079's PARAM lines are stamped at the epoch, its data from 0: not a stream.
+  const auto summary = summarize(kRadish / "freiburg-079-corrected.log.gz");
+  EXPECT_EQ(summary.streams.at("PARAM").count, 187u);
+  EXPECT_FALSE(summary.streams.at("PARAM").rate());
 }
 
 TEST(LogInfo, PlayerLogDevicesGapsRatesAndMalformedLines) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "log/carmen_log_reader.hpp"
+#include "log/log_clock_reader.hpp"
 #include "log/log_conversion.hpp"
 #include "log/log_input.hpp"
 #include "log/text_log_reader.hpp"
@@ -20,9 +21,11 @@ SourceStats for_each_message(const std::filesystem::path& path, bool strict,
                              const std::function<void(const SourceMessage&)>& visit) {
   SourceStats stats;
   stats.format = detect_log_format(path);
+  // Unusable times are replaced (and said so on stderr once) before they become messages.
+  const auto clock = log::audit_log_times(path);
   auto in = log::open_log_input(path);
   if (stats.format == LogFormat::kPlayer) {
-    log::TextLogReader reader(*in, path.string(), {.strict = strict});
+    log::TextLogReader reader(*in, path.string(), {.strict = strict, .clock = clock});
     while (auto line = reader.next()) {
       const auto* data = std::get_if<log::DataLine>(&*line);
       if (!data) continue;
@@ -36,7 +39,7 @@ SourceStats for_each_message(const std::filesystem::path& path, bool strict,
     stats.malformed = reader.malformed_count();
     stats.malformed_texts = reader.malformed_lines();
   } else {
-    log::CarmenLogReader reader(*in, path.string(), {.strict = strict});
+    log::CarmenLogReader reader(*in, path.string(), {.strict = strict, .clock = clock});
     // Records CARMEN reads but Player cannot hold (a negative time, as one
     // ODOM line of Freiburg 079 has) count as malformed, like a bad line.
     std::size_t unconvertible = 0;

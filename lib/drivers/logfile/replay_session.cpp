@@ -7,6 +7,7 @@
 #include <utility>
 #include <variant>
 
+#include "log/log_clock_reader.hpp"
 #include "log/log_format_detection.hpp"
 #include "log/log_input.hpp"
 #include "text/printable.hpp"
@@ -64,6 +65,9 @@ ReplaySession::ReplaySession(ReplayOptions options, core::ManualClock* clock,
       timer_(timer ? std::move(timer) : std::make_shared<SteadyReplayTimer>()),
       logger_(logger) {
   first_log_time_ = first_replay_time(options_.path);
+  // A log without usable times is paced by its LogClock (warned once on stderr).
+  log_clock_ = log::audit_log_times(options_.path);
+  if (const auto first = log_clock_->replacement(0)) first_log_time_ = protocol::Timestamp::from_seconds(*first);
   last_log_time_ = first_log_time_;
   // Before anyone subscribes the server already speaks log time.
   if (clock_ != nullptr) clock_->set(first_log_time_);
@@ -111,7 +115,7 @@ bool ReplaySession::replay_file(const std::stop_token& stop, std::uint64_t& serv
     logger_.error(std::string("readlog: ") + e.what());
     return !stop.stop_requested();
   }
-  log::TextLogReader reader(*in, options_.path.string());
+  log::TextLogReader reader(*in, options_.path.string(), {.clock = log_clock_});
   const std::uint64_t skip_before =
       core::to_microseconds(first_log_time_) +
       static_cast<std::uint64_t>(options_.start_offset * 1e6);

@@ -29,6 +29,7 @@
 #include "core/device.hpp"
 #include "core/logger.hpp"
 #include "drivers/logfile/replay_timer.hpp"
+#include "log/log_clock.hpp"
 #include "log/text_log_reader.hpp"
 #include "protocol/device_address.hpp"
 
@@ -99,6 +100,7 @@ class ReplaySession {
   core::ManualClock* const clock_;
   const std::shared_ptr<ReplayTimer> timer_;
   core::Logger& logger_;
+  std::shared_ptr<const log::LogClock> log_clock_;  // replaces the log's unusable times
   protocol::Timestamp first_log_time_;
   protocol::Timestamp last_log_time_;
   std::atomic<std::uint64_t> malformed_lines_{0};
