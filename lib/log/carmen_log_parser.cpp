@@ -132,6 +132,17 @@ CarmenParam parse_param(const LineFields& fields) {
   FieldCursor cursor(fields);
   CarmenParam param;
   param.name = cursor.text("parameter name");
+  if (fields.size() == 5) {
+    // `PARAM name value host logger_timestamp`: the short stamp of Radish's
+    // corrected logs (`PARAM robot_use_laser on nohost 0`). A full stamp needs
+    // six fields with a value, and CARMEN writes no empty values.
+    param.value = cursor.text("parameter value");
+    param.stamp.host = cursor.text("host");
+    param.stamp.logger_timestamp = cursor.number("logger timestamp");
+    param.stamp.ipc_timestamp = param.stamp.logger_timestamp;
+    cursor.end();
+    return param;
+  }
   if (cursor.remaining() < 3) {
     fields.fail_at_end("line ends before the " + std::string(kStampWhat) + " of PARAM " + param.name);
   }

@@ -53,6 +53,20 @@ TEST(CarmenLineTest, ParamValueKeepsItsInnerSpaces) {
   EXPECT_EQ(param.stamp.host, "nohost");
 }
 
+TEST(CarmenLineTest, ReadsParamWithRadishsShortStamp) {
+  // Edmonton, Freiburg 101 and Intel write `name value host logger_timestamp`.
+  const auto on = as<CarmenParam>("PARAM robot_allow_rear_motion on nohost 0");
+  EXPECT_EQ(on.name, "robot_allow_rear_motion");
+  EXPECT_EQ(on.value, "on");
+  EXPECT_EQ(on.stamp.host, "nohost");
+  EXPECT_EQ(on.stamp.ipc_timestamp, 0.0);
+  EXPECT_EQ(on.stamp.logger_timestamp, 0.0);
+  const auto number = as<CarmenParam>("PARAM robot_frontlaser_offset 0.0 nohost 12.5");
+  EXPECT_EQ(number.value, "0.0");  // a value, not an ipc timestamp with the value left empty
+  EXPECT_EQ(number.stamp.ipc_timestamp, 12.5);
+  EXPECT_NE(error_of("PARAM robot_use_laser on nohost later").message().find("logger timestamp"), std::string::npos);
+}
+
 TEST(CarmenLineTest, ReadsOdometry) {
   const auto odometry = as<CarmenOdometry>("ODOM 1.5 -2.25 0.785398 0.3 -0.1 0.05 32.9068 pippo 33.0001\n");
   EXPECT_EQ(odometry.pose, (CarmenPose{1.5, -2.25, 0.785398}));
