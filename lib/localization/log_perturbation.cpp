@@ -17,6 +17,7 @@
 #include "log/log_parse_error.hpp"
 #include "log/text_log_reader.hpp"
 #include "protocol/interfaces.hpp"
+#include "text/line_reader.hpp"
 
 namespace playerkit::localization {
 namespace {
@@ -36,7 +37,7 @@ class LineCopier {
   explicit LineCopier(const std::filesystem::path& path) : in_(log::open_log_input(path)), name_(path.string()) {}
 
   bool next(std::string& line) {
-    if (!std::getline(*in_, line)) {
+    if (!text::read_line(*in_, line, name_, number_ + 1)) {
       if (const auto error = in_->error()) throw std::runtime_error(name_ + ": " + *error);
       return false;
     }

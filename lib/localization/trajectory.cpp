@@ -10,6 +10,7 @@
 #include <string>
 
 #include "log/log_input.hpp"
+#include "text/line_reader.hpp"
 
 namespace playerkit::localization {
 namespace {
@@ -56,7 +57,7 @@ Trajectory read_trajectory_csv(std::istream& in, std::string_view name) {
   std::size_t needed_fields = 0;
   std::string line;
   int number = 0;
-  while (std::getline(in, line)) {
+  while (text::read_line(in, line, name, number + 1)) {
     ++number;
     const auto content = trimmed(line);
     if (content.empty() || content.front() == '#') continue;

@@ -10,10 +10,12 @@
 #include "log/carmen_log_writer.hpp"
 #include "log/log_conversion.hpp"
 #include "log/log_input.hpp"
+#include "log/log_line.hpp"
 #include "log/text_log_reader.hpp"
 #include "log/text_log_writer.hpp"
 #include "message_decoder.hpp"
 #include "message_source.hpp"
+#include "text/printable.hpp"
 
 namespace playerkit::plog {
 namespace {
@@ -124,9 +126,11 @@ void run_cut(const CutOptions& options, std::ostream& out, std::ostream& err, Pr
   std::size_t malformed = 0;
   std::vector<std::string> kept;
   std::string text;
-  for (int number = 1; std::getline(*in, text); ++number) {
+  bool too_long = false;
+  for (int number = 1; log::read_log_line(*in, text, too_long); ++number) {
     log::LogLine line;
     try {
+      if (too_long) throw log::too_long_line_error(options.input, number);
       line = log::parse_log_line(text, options.input, number, version);
     } catch (const log::LogParseError& e) {
       if (options.strict) throw;
@@ -139,7 +143,7 @@ void run_cut(const CutOptions& options, std::ostream& out, std::ostream& err, Pr
         const auto parsed = log::parse_format_version(header->value);
         if (!parsed) {
           throw log::LogParseError(options.input, number, header->value_column,
-                                   "unknown file version '" + header->value + "'");
+                                   "unknown file version '" + text::excerpt(header->value) + "'");
         }
         version = *parsed;
       }

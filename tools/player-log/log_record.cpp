@@ -7,10 +7,12 @@
 #include <variant>
 
 #include "client/client.hpp"
+#include "log/log_line.hpp"
 #include "log/text_log_reader.hpp"
 #include "log/text_log_writer.hpp"
 #include "log_tool.hpp"
 #include "protocol/errors.hpp"
+#include "text/printable.hpp"
 
 namespace playerkit::plog {
 namespace {
@@ -151,9 +153,11 @@ void record_from_stdin(const RecordOptions& options, std::istream& in, Recording
   std::size_t malformed = 0;
   std::string text;
   // A blocking getline: a signal ends the run at the next line or at the end of input.
-  for (int number = 1; !limits.done() && std::getline(in, text); ++number) {
+  bool too_long = false;
+  for (int number = 1; !limits.done() && log::read_log_line(in, text, too_long); ++number) {
     log::LogLine line;
     try {
+      if (too_long) throw log::too_long_line_error("stdin", number);
       line = log::parse_log_line(text, "stdin", number, version);
     } catch (const log::LogParseError& e) {
       if (options.strict) throw;
@@ -163,7 +167,7 @@ void record_from_stdin(const RecordOptions& options, std::istream& in, Recording
     if (const auto* header = std::get_if<log::HeaderLine>(&line)) {
       if (header->name == "File version") {
         const auto parsed = log::parse_format_version(header->value);
-        if (!parsed) throw std::runtime_error("stdin: unknown file version '" + header->value + "'");
+        if (!parsed) throw std::runtime_error("stdin: unknown file version '" + text::excerpt(header->value) + "'");
         version = *parsed;
       }
       output.stream() << text << "\n";

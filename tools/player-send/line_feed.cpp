@@ -8,6 +8,8 @@
 
 #include "client/client.hpp"
 #include "json_line.hpp"
+#include "text/line_reader.hpp"
+#include "text/printable.hpp"
 #include "usage_error.hpp"
 
 namespace playerkit::player_send {
@@ -21,7 +23,7 @@ bool is_blank(const std::string& line) {
 }
 
 void report_stop(std::ostream& diagnostics, std::size_t line_number, const std::string& why) {
-  diagnostics << "player-send: line " << line_number << ": " << why << "\n"
+  diagnostics << "player-send: line " << line_number << ": " << text::printable(why) << "\n"
               << "player-send: stopped at line " << line_number
               << ": the lines before it were sent, nothing after it was read\n";
 }
@@ -34,7 +36,13 @@ ExitCode send_lines(std::istream& in, Sender& sender, std::optional<double> rate
   auto next_due = Clock::now();
   ExitCode result = ExitCode::kAck;
   std::string line;
-  for (std::size_t line_number = 1; std::getline(in, line); ++line_number) {
+  for (std::size_t line_number = 1;; ++line_number) {
+    try {
+      if (!text::read_line(in, line, "stdin", static_cast<long long>(line_number))) break;
+    } catch (const text::LineTooLongError&) {
+      report_stop(diagnostics, line_number, "line longer than " + std::to_string(text::kMaxLineBytes) + " bytes");
+      return ExitCode::kUsage;
+    }
     if (is_blank(line)) continue;
     protocol::Message message;
     try {
