@@ -8,6 +8,7 @@
 #include <optional>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <iterator>
 #include <sstream>
 #include <variant>
 
@@ -16,6 +17,7 @@
 #include "log/text_log_reader.hpp"
 #include "log_info.hpp"
 #include "protocol/interfaces.hpp"
+#include "support/scratch_directory.hpp"
 
 namespace playerkit::plog {
 namespace log_convert_test {
@@ -128,6 +130,56 @@ TEST(Cut, KeepsTheWindowAndTheDevicesByteForByte) {
   run_cut(cut_options(temp("cut-in.log"), 1.0, std::nullopt, {{protocol::kPositionCode, 0}}), out, err, progress);
   EXPECT_EQ(out.str(), header + lines[2] + "\n" + lines[3] + "\n" + lines[4] + "\n");
   EXPECT_THROW(run_cut(cut_options(kIntel.string(), std::nullopt, std::nullopt), out, err, progress), std::runtime_error);
+}
+
+std::vector<std::string> directory_entries(const std::filesystem::path& directory) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(directory)) {
+    names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+TEST(Convert, ADamagedGzipLeavesNoOutputAndAnOlderFileWhole) {
+  testing::ScratchDirectory scratch("log_convert_test");
+  std::ifstream source(kIntel, std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(source), std::istreambuf_iterator<char>()};
+  const auto damaged = scratch.write("cut.log.gz", bytes.substr(0, bytes.size() / 3));
+  const auto older = scratch.write("older.log", "an older output\n");
+  for (const auto& output : {scratch.file("new.log"), older}) {
+    try {
+      convert(convert_options(damaged.string(), output.string(), ConvertTarget::kPlayer));
+      FAIL() << "converted a damaged file";
+    } catch (const std::runtime_error& e) {
+      const std::string text = e.what();
+      EXPECT_TRUE(text.starts_with(damaged.string() + ": gzip data cut short: the file ends at byte " +
+                                   std::to_string(bytes.size() / 3) + ", in line "))
+          << text;
+    }
+  }
+  EXPECT_EQ(directory_entries(scratch.path()), (std::vector<std::string>{"cut.log.gz", "older.log"}));
+  std::ifstream kept(older);
+  std::string line;
+  std::getline(kept, line);
+  EXPECT_EQ(line, "an older output");
+}
+
+TEST(Cut, WritingOverTheInputIsAUsageErrorAndTouchesNothing) {
+  testing::ScratchDirectory scratch("log_convert_test");
+  const std::string log = "## Player version 1.5 \n100.000 h 6665 truth 00 100.000 +1.000 +2.000 +0.500\n";
+  const auto input = scratch.write("a.log", log);
+  std::filesystem::create_symlink(input, scratch.file("link.log"));
+  std::ostringstream out, err;
+  Progress progress(err, false);
+  for (const auto& spelling : {(scratch.path() / "." / "a.log").string(), scratch.file("link.log").string()}) {
+    CutOptions options = cut_options(input.string(), std::nullopt, std::nullopt);
+    options.output = spelling;
+    EXPECT_THROW(run_cut(options, out, err, progress), UsageError) << spelling;
+    EXPECT_THROW(convert(convert_options(input.string(), spelling, ConvertTarget::kCarmen)), UsageError);
+  }
+  std::ifstream kept(input, std::ios::binary);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(kept), std::istreambuf_iterator<char>()), log);
 }
 
 }  // namespace log_convert_test
