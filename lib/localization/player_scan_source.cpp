@@ -9,6 +9,7 @@
 #include "log/text_log_tokens.hpp"
 #include "localization/logged_scan_source.hpp"
 #include "log/log_input.hpp"
+#include "log/log_line.hpp"
 #include "log/log_parse_error.hpp"
 #include "log/text_log_reader.hpp"
 #include "protocol/binary_codec.hpp"
@@ -48,8 +49,14 @@ class PlayerScanSource final : public LoggedScanSource {
 
   std::optional<LoggedScan> next() override {
     std::string line;
-    while (std::getline(*in_, line)) {
+    bool too_long = false;
+    while (log::read_log_line(*in_, line, too_long)) {
       ++line_number_;
+      if (too_long) {  // a malformed line (text::kMaxLineBytes)
+        if (options_.strict) throw log::too_long_line_error(name_, line_number_);
+        ++malformed_lines_;
+        continue;
+      }
       auto ready = take_line(line);
       if (ready) return ready;
     }
