@@ -73,7 +73,9 @@ laser_lines() {
     awk '$1 !~ /^#/ && $4 != "sync"' "$BATS_TEST_TMPDIR/$run.log" | cut -d' ' -f4- >"$BATS_TEST_TMPDIR/$run.data"
   done
   [ "$(wc -l <"$BATS_TEST_TMPDIR/first.data")" -eq 4000 ]
-  [ "$(grep -c '^laser' "$BATS_TEST_TMPDIR/first.data")" -gt 200 ]
+  # 189 scans among the first 4000 messages: the corrected poses Intel stamps 0
+  # after each scan are served too, at interpolated times (lib/log/log_clock.hpp).
+  [ "$(grep -c '^laser' "$BATS_TEST_TMPDIR/first.data")" -gt 150 ]
   diff "$BATS_TEST_TMPDIR/first.data" "$BATS_TEST_TMPDIR/second.data"
 }
 
