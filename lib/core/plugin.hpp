@@ -22,7 +22,7 @@
 namespace playerkit::core {
 
 // Bumped whenever DriverRegistry, Driver or Device change incompatibly.
-inline constexpr int kPluginAbiVersion = 1;
+inline constexpr int kPluginAbiVersion = 2;  // 2: Driver::check()
 
 class PluginError : public std::runtime_error {
  public:
