@@ -6,6 +6,7 @@
 #include "config/closest_name.hpp"
 #include "drivers_exit_status.hpp"
 #include "protocol/interfaces.hpp"
+#include "text/printable.hpp"
 
 namespace playerkit::player_drivers {
 
@@ -50,7 +51,7 @@ DriverSelection select_drivers(const core::DriverRegistry& registry, std::string
   for (const auto* spec : registry.all()) candidates.push_back(spec->name);
   for (auto& family : family_names(registry)) candidates.push_back(std::move(family));
   const std::vector<std::string_view> views(candidates.begin(), candidates.end());
-  std::string message = "no driver or driver family '" + std::string(name) + "'";
+  std::string message = "no driver or driver family '" + text::excerpt(name) + "'";
   if (const auto nearest = config::closest_name(name, views)) message += "; did you mean '" + *nearest + "'?";
   throw UsageError(message + " (player-drivers list shows them all)");
 }

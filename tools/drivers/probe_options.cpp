@@ -5,6 +5,7 @@
 
 #include "config/closest_name.hpp"
 #include "protocol/interfaces.hpp"
+#include "text/printable.hpp"
 
 namespace playerkit::player_drivers {
 
@@ -16,7 +17,7 @@ ListOptions make_list_options(const ListCommandLine& command_line) {
   if (!info) {
     std::vector<std::string_view> names;
     for (const auto& known : protocol::all_interfaces()) names.push_back(known.name);
-    std::string message = "--interface '" + command_line.interface + "' is not a Player interface";
+    std::string message = "--interface '" + text::excerpt(command_line.interface) + "' is not a Player interface";
     if (const auto nearest = config::closest_name(command_line.interface, names)) {
       message += "; did you mean '" + *nearest + "'?";
     }
