@@ -42,6 +42,7 @@ bool Device::writable() const { return info_.access == Access::kWrite || info_.a
 bool Device::subscribe() {
   std::lock_guard lock(subscription_mutex_);
   if (subscriptions_ == 0) {
+    finish_background_shutdown();
     set_available(true);
     try {
       driver_->setup();
@@ -61,33 +62,49 @@ bool Device::subscribe() {
 void Device::unsubscribe() {
   std::lock_guard lock(subscription_mutex_);
   if (subscriptions_ == 0) return;
-  if (subscriptions_ == 1) {
-    try {
-      driver_->shutdown();
-    } catch (const std::exception& e) {
-      // 1.5 kept the device subscribed when Shutdown failed; nobody is left to
-      // use it, so count it closed and say so.
-      logger_.error(name() + ": shutdown failed: " + e.what());
-    }
-    logger_.debug(name() + ": shut down");
-  }
+  if (subscriptions_ == 1) shut_driver_down();
   --subscriptions_;
 }
 
-int Device::subscriptions() const {
+void Device::unsubscribe_from_event_loop() {
   std::lock_guard lock(subscription_mutex_);
-  return subscriptions_;
+  if (subscriptions_ != 1 || !driver_->setup_may_block()) {
+    if (subscriptions_ == 1) shut_driver_down();
+    if (subscriptions_ > 0) --subscriptions_;
+    return;
+  }
+  // Counted gone first: the server sees the device down (no update(), a
+  // newcomer sets it up again, and that subscribe() waits for this thread).
+  subscriptions_ = 0;
+  // The thread takes no lock: whatever would touch the driver next (a
+  // subscribe(), force_shutdown()) joins it first, holding the lock.
+  finish_background_shutdown();
+  background_shutdown_ = std::thread([this] { shut_driver_down(); });
 }
+
+int Device::subscriptions() const { return subscriptions_.load(); }
 
 void Device::force_shutdown() {
   std::lock_guard lock(subscription_mutex_);
+  finish_background_shutdown();
   if (subscriptions_ == 0) return;
   subscriptions_ = 0;
+  shut_driver_down();
+}
+
+void Device::shut_driver_down() {
   try {
     driver_->shutdown();
   } catch (const std::exception& e) {
+    // 1.5 kept the device subscribed when Shutdown failed; nobody is left to
+    // use it, so count it closed and say so.
     logger_.error(name() + ": shutdown failed: " + e.what());
   }
+  logger_.debug(name() + ": shut down");
+}
+
+void Device::finish_background_shutdown() {
+  if (background_shutdown_.joinable()) background_shutdown_.join();
 }
 
 void Device::set_available(bool available, std::string reason) {

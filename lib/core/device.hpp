@@ -12,6 +12,7 @@
 // driver's setup(), the last its shutdown(). A client with 'a' access holds two.
 // All members are thread-safe unless noted.
 
+#include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
@@ -97,9 +98,16 @@ class Device {
 
   // --- subscriptions (from the server's thread or a driver's setup/shutdown)
   // Runs setup() on the first subscription. False if setup refused (logged).
+  // Waits for a shutdown still under way (unsubscribe_from_event_loop()).
   bool subscribe();
   // Runs shutdown() when the last subscription goes. Extra calls are ignored.
   void unsubscribe();
+  // For the server's event loop: as unsubscribe(), but when the last
+  // subscription of a driver whose setup may block goes, its shutdown() runs
+  // on a thread of its own (stopping a thread that waits on a remote can take
+  // seconds) and this returns at once, the device counted unsubscribed.
+  void unsubscribe_from_event_loop();
+  // Never waits, not even for a setup() under way on another thread.
   [[nodiscard]] int subscriptions() const;
   // Shuts the driver down whatever the count (server exit).
   void force_shutdown();
@@ -161,6 +169,9 @@ class Device {
   // bookkeeping, so that listeners may call back into this device.
   void notify_listeners(void (DeviceListener::*event)(const Device&));
   [[nodiscard]] std::optional<std::string> unavailable_reason() const;
+  // With subscription_mutex_ held, or on the background shutdown thread.
+  void shut_driver_down();
+  void finish_background_shutdown();
 
   const DeviceKey key_;
   const DeviceInfo info_;
@@ -170,8 +181,11 @@ class Device {
   std::size_t command_min_size_ = 0;
   std::size_t command_max_size_ = 0;  // 0: the interface has no command
 
+  // Held for the whole of setup() and shutdown(); the count is atomic so that
+  // the server can look at it while another thread is in setup().
   mutable std::mutex subscription_mutex_;
-  int subscriptions_ = 0;
+  std::atomic<int> subscriptions_ = 0;
+  std::thread background_shutdown_;  // unsubscribe_from_event_loop()'s, until joined
 
   // Not under subscription_mutex_: setup() runs holding that one and may call
   // set_available().

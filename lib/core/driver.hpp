@@ -74,6 +74,14 @@ class Driver {
   virtual RequestResult handle_request(const Request& request);
   // True for drivers that answer requests from their own thread.
   [[nodiscard]] virtual bool runs_own_thread() const { return false; }
+  // True when setup() and shutdown() may wait seconds on a link or a remote
+  // (a connect timeout, a hardware handshake) and are safe to call from a
+  // thread that is not the server's. The server then runs them off its event
+  // loop, so that one slow device holds up only the clients that open it, and
+  // answers the DEV request when setup() ends. A driver whose setup()
+  // subscribes to other devices must not say so: their setup() would run on
+  // that thread too.
+  [[nodiscard]] virtual bool setup_may_block() const { return false; }
 
   // Hardware drivers: their link's counters (bytes, telegrams, checksum
   // errors, resyncs, timeouts, reconnects); empty for the others.

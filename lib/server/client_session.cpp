@@ -60,31 +60,44 @@ void ClientSession::start() {
 // ---------------------------------------------------------------- reading
 
 void ClientSession::read_more() {
-  if (closed_) return;
+  if (closed_ || reading_ || awaiting_setup_) return;
+  reading_ = true;
   socket_.async_read_some(asio::buffer(read_buffer_),
                           [self = shared_from_this()](const boost::system::error_code& ec,
                                                       std::size_t n) {
+                            self->reading_ = false;
                             if (self->closed_) return;
                             if (ec) {
                               self->close(ec == asio::error::eof ? "disconnected"
                                                                  : "connection lost: " + ec.message());
                               return;
                             }
-                            for (const protocol::FrameEvent& event : self->reader_.feed(
+                            for (protocol::FrameEvent& event : self->reader_.feed(
                                      std::span<const std::uint8_t>(self->read_buffer_.data(), n))) {
-                              if (self->closed_) return;
-                              if (const auto* message = std::get_if<protocol::Message>(&event)) {
-                                self->handle_message(*message);
-                              } else if (const auto* skipped = std::get_if<protocol::SkippedBytes>(&event)) {
-                                self->warn_once("garbage", self->label() + ": skipped " +
-                                                               std::to_string(skipped->count) +
-                                                               " bytes that were not a message");
-                              } else {
-                                self->handle_oversize(std::get<protocol::OversizeMessage>(event).header);
-                              }
+                              self->incoming_.push_back(std::move(event));
                             }
+                            self->handle_incoming();
                             self->read_more();
                           });
+}
+
+void ClientSession::handle_incoming() {
+  while (!closed_ && !awaiting_setup_ && !incoming_.empty()) {
+    const protocol::FrameEvent event = std::move(incoming_.front());
+    incoming_.pop_front();
+    handle_event(event);
+  }
+}
+
+void ClientSession::handle_event(const protocol::FrameEvent& event) {
+  if (const auto* message = std::get_if<protocol::Message>(&event)) {
+    handle_message(*message);
+  } else if (const auto* skipped = std::get_if<protocol::SkippedBytes>(&event)) {
+    warn_once("garbage", label() + ": skipped " + std::to_string(skipped->count) +
+                             " bytes that were not a message");
+  } else {
+    handle_oversize(std::get<protocol::OversizeMessage>(event).header);
+  }
 }
 
 void ClientSession::handle_message(const protocol::Message& message) {
@@ -122,10 +135,35 @@ void ClientSession::handle_request(const protocol::Message& message) {
     handle_device_request(message);
     return;
   }
+  if (context_.set_up_in_background) {
+    if (core::Device* device = device_to_set_up_first(state_, message.payload, context_.devices)) {
+      awaiting_setup_ = true;
+      context_.set_up_in_background(
+          *device, [self = shared_from_this(), message, device](bool subscribed) {
+            self->finish_device_open(message, *device, subscribed);
+          });
+      return;
+    }
+  }
   PlayerReply reply = answer_player_request(state_, message.payload, context_.devices);
   send_reply(reply.type, message.device(), reply.payload);
   if (reply.schedule_changed) rearm_push_timer();
   if (reply.round_requested) request_round();
+}
+
+void ClientSession::finish_device_open(const protocol::Message& request, core::Device& device,
+                                       bool subscribed) {
+  awaiting_setup_ = false;
+  std::optional<PlayerReply> reply;
+  if (!closed_) {
+    reply = answer_device_request_after_setup(state_, request.payload, context_.devices, subscribed);
+  }
+  // The setup's own subscription: the client holds its own by now (or none),
+  // and the count is right by the time the client reads its answer.
+  if (subscribed) device.unsubscribe_from_event_loop();
+  if (reply) send_reply(reply->type, request.device(), reply->payload);
+  handle_incoming();
+  read_more();
 }
 
 void ClientSession::handle_device_request(const protocol::Message& message) {
@@ -337,7 +375,7 @@ void ClientSession::release_devices() {
       const auto stop = protocol::encode(protocol::PositionCommand{});
       device->put_command(state_.id, stop);
     }
-    for (int i = 0; i < held; ++i) device->unsubscribe();
+    for (int i = 0; i < held; ++i) device->unsubscribe_from_event_loop();
   }
   state_.subscriptions.entries().clear();
 }

@@ -8,6 +8,11 @@
 // fall due meanwhile are dropped, so a slow client sees lower-rate but current
 // data, and its output never grows without bound. Replies are never dropped.
 //
+// A DEV request whose device must first be set up off the event loop (its
+// driver's setup may block) is answered when that setup ends; meanwhile the
+// client's later messages wait, unread, so that every reply keeps its place.
+// The other clients are not held up, nor this client's data rounds.
+//
 // Everything here runs on the server's event-loop thread.
 
 #include <array>
@@ -40,6 +45,10 @@ struct SessionContext {
   core::Logger& logger;
   const ServerOptions& options;
   std::function<void(core::ClientId)> closed;  // called once, when the session ends
+  // Subscribes to a device whose setup may block on a thread of its own, then
+  // calls `done(subscribed)` on the event loop (BackgroundSetups). Empty:
+  // such setups run in place, holding the loop up.
+  std::function<void(core::Device&, std::function<void(bool subscribed)> done)> set_up_in_background;
 };
 
 struct SessionStats {
@@ -67,9 +76,13 @@ class ClientSession : public std::enable_shared_from_this<ClientSession> {
   using Clock = std::chrono::steady_clock;
 
   void read_more();
+  // Handles the messages read, in order, until one has to wait for a setup.
+  void handle_incoming();
+  void handle_event(const protocol::FrameEvent& event);
   void handle_message(const protocol::Message& message);
   void handle_authentication(const protocol::Message& message);
   void handle_request(const protocol::Message& message);
+  void finish_device_open(const protocol::Message& request, core::Device& device, bool subscribed);
   void handle_device_request(const protocol::Message& message);
   void handle_command(const protocol::Message& message);
   void handle_oversize(const protocol::MessageHeader& header);
@@ -99,6 +112,11 @@ class ClientSession : public std::enable_shared_from_this<ClientSession> {
 
   protocol::FrameReader reader_;
   std::array<std::uint8_t, 16384> read_buffer_{};
+  bool reading_ = false;
+  // Read but not handled yet: at most one read's worth, since reading stops
+  // while a DEV request waits for its device's setup.
+  std::deque<protocol::FrameEvent> incoming_;
+  bool awaiting_setup_ = false;
 
   std::deque<std::vector<std::uint8_t>> output_;
   std::size_t output_bytes_ = 0;

@@ -47,8 +47,10 @@ PlayerReply driver_info(std::span<const std::uint8_t> payload, const core::Devic
   return ack(protocol::encode(info));  // 1.5 zeroed the id; we echo it
 }
 
+// `may_set_up` false: the device's setup has just failed elsewhere; the client
+// holds nothing on it and gets 'e'.
 PlayerReply device_access(ClientState& client, std::span<const std::uint8_t> payload,
-                          const core::DeviceTable& devices) {
+                          const core::DeviceTable& devices, bool may_set_up = true) {
   const auto request = decode_padded<protocol::DeviceAccessRequest>(payload);
   protocol::DeviceAccessReply reply;
   reply.subtype = request.subtype;
@@ -59,8 +61,8 @@ PlayerReply device_access(ClientState& client, std::span<const std::uint8_t> pay
     return nack(protocol::encode(reply));
   }
   core::Device* device = devices.find(client.port, {request.code, request.index});
-  reply.access = static_cast<std::uint8_t>(
-      client.subscriptions.request({request.code, request.index}, request.access, device, client.id));
+  reply.access = static_cast<std::uint8_t>(client.subscriptions.request(
+      {request.code, request.index}, request.access, may_set_up ? device : nullptr, client.id));
   if (device != nullptr) reply.driver_name.assign(device->info().driver_name);
   return ack(protocol::encode(reply));
 }
@@ -121,6 +123,32 @@ PlayerReply answer_player_request(ClientState& client, std::span<const std::uint
     case protocol::kPlayerAuthReq:  // only meaningful while auth is pending
     default: return nack();
   }
+}
+
+core::Device* device_to_set_up_first(const ClientState& client,
+                                     std::span<const std::uint8_t> payload,
+                                     const core::DeviceTable& devices) {
+  if (payload.size() < protocol::DeviceAccessRequest::kWireSize ||
+      read_u16(payload, 0) != protocol::kPlayerDevReq) {
+    return nullptr;
+  }
+  const auto request = decode_padded<protocol::DeviceAccessRequest>(payload);
+  const DeviceAddress address{request.code, request.index};
+  core::Device* device = devices.find(client.port, address);
+  if (device == nullptr || !device->driver().setup_may_block() || device->subscriptions() > 0 ||
+      !is_access_letter(request.access)) {
+    return nullptr;
+  }
+  const auto wanted = static_cast<Access>(request.access);
+  const bool subscribes = SubscriptionTable::held_subscriptions(wanted) >
+                          SubscriptionTable::held_subscriptions(client.subscriptions.access(address));
+  return subscribes ? device : nullptr;
+}
+
+PlayerReply answer_device_request_after_setup(ClientState& client,
+                                              std::span<const std::uint8_t> payload,
+                                              const core::DeviceTable& devices, bool set_up) {
+  return device_access(client, payload, devices, set_up);
 }
 
 }  // namespace playerkit::server

@@ -24,4 +24,21 @@ struct PlayerReply {
 PlayerReply answer_player_request(ClientState& client, std::span<const std::uint8_t> payload,
                                   const core::DeviceTable& devices);
 
+// A request (to the `player` device) that must wait for a device's setup()
+// off the event loop before it can be answered: a DEV request that would be
+// the device's first subscription, when its driver's setup may block
+// (core::Driver::setup_may_block()). The device, or nullptr for requests
+// answered at once.
+core::Device* device_to_set_up_first(const ClientState& client,
+                                     std::span<const std::uint8_t> payload,
+                                     const core::DeviceTable& devices);
+
+// Answers such a DEV request once its device's setup has run elsewhere. When
+// it succeeded (`set_up`), the device is held by that setup's subscription and
+// the client's own are taken as for any request; when it failed, the client
+// is granted 'e' without a second attempt.
+PlayerReply answer_device_request_after_setup(ClientState& client,
+                                              std::span<const std::uint8_t> payload,
+                                              const core::DeviceTable& devices, bool set_up);
+
 }  // namespace playerkit::server

@@ -71,6 +71,11 @@ void Server::run() {
   schedule_update();
   schedule_stall_check();
   io_.run();
+  // Setups still under way post their results: wait for them and deliver
+  // them to their (closed) sessions, which give their subscriptions back.
+  setups_.wait_all();
+  io_.restart();
+  io_.poll();
 }
 
 void Server::stop() {
@@ -104,9 +109,13 @@ void Server::accept_next(Listener& listener) {
       const core::ClientId id = next_client_id_++;
       auto session = std::make_shared<ClientSession>(
           std::move(socket), id, listener.port,
-          SessionContext{devices_, clock_, logger_, options_, [this](core::ClientId closed) {
+          SessionContext{devices_, clock_, logger_, options_,
+                         [this](core::ClientId closed) {
                            sessions_.erase(closed);
                            client_count_.store(sessions_.size());
+                         },
+                         [this](core::Device& device, std::function<void(bool)> done) {
+                           setups_.start(device, std::move(done));
                          }});
       sessions_.emplace(id, session);
       client_count_.store(sessions_.size());

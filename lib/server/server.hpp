@@ -28,6 +28,7 @@
 #include "core/clock.hpp"
 #include "core/device_table.hpp"
 #include "core/logger.hpp"
+#include "server/background_setups.hpp"
 #include "server/client_session.hpp"
 #include "server/server_options.hpp"
 
@@ -83,6 +84,7 @@ class Server final : private core::DeviceListener {
   ServerOptions options_;
 
   boost::asio::io_context io_;
+  BackgroundSetups setups_{io_};  // before the sessions whose DEV replies wait on them
   std::vector<std::unique_ptr<Listener>> listeners_;
   std::map<core::ClientId, std::shared_ptr<ClientSession>> sessions_;
   core::ClientId next_client_id_ = 1;

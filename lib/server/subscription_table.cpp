@@ -52,14 +52,14 @@ Access SubscriptionTable::request(DeviceAddress address, std::uint8_t requested,
   for (int i = held; i < needed; ++i) {
     if (device == nullptr || !device->subscribe()) {
       // 1.5 kept (leaked) what was held before; give it all back instead.
-      for (int j = 0; j < i && device != nullptr; ++j) device->unsubscribe();
+      for (int j = 0; j < i && device != nullptr; ++j) device->unsubscribe_from_event_loop();
       if (device != nullptr) device->readers().forget(reader);
       entry.access = Access::kError;
       return entry.access;
     }
   }
   if (stops_reading) device->readers().forget(reader);
-  for (int i = needed; i < held && device != nullptr; ++i) device->unsubscribe();
+  for (int i = needed; i < held && device != nullptr; ++i) device->unsubscribe_from_event_loop();
   // Closing what was never open keeps 'e' (or 'c'), as 1.5 did.
   if (!(wanted == Access::kClose && held == 0)) entry.access = wanted;
   return entry.access;

@@ -22,6 +22,8 @@ class P2osDeviceDriver final : public core::Driver {
   void setup() override;
   void shutdown() override;
   [[nodiscard]] bool runs_own_thread() const override { return true; }
+  // The first device of a robot opens it: port, SYNC handshake, up to seconds.
+  [[nodiscard]] bool setup_may_block() const override { return true; }
   core::RequestResult handle_request(const core::Request& request) override;
   [[nodiscard]] std::vector<core::DriverCounter> counters() const override;
   bool set_byte_trace(core::ByteTrace trace) override;

@@ -1,5 +1,6 @@
 #include "drivers/passthrough/passthrough_driver.hpp"
 
+#include <algorithm>
 #include <exception>
 #include <memory>
 #include <stdexcept>
@@ -69,8 +70,14 @@ void PassthroughDriver::close() { client_.reset(); }
 void PassthroughDriver::connect_and_subscribe() {
   const std::string where = remote_.host + ":" + std::to_string(remote_.port);
   const std::string what = protocol::to_string(remote_.address);
+  // One deadline for all of it: a remote that sends its banner late and then
+  // says nothing must not take twice the timeout.
+  const auto deadline = std::chrono::steady_clock::now() + timings_.connect_timeout;
   try {
     auto client = client::Client::connect(remote_.host, remote_.port, timings_.connect_timeout);
+    client.set_timeout(std::max(std::chrono::milliseconds(1),
+                                std::chrono::duration_cast<std::chrono::milliseconds>(
+                                    deadline - std::chrono::steady_clock::now())));
     const client::AccessGrant grant = client.request_access(remote_.address, Access::kAll);
     if (grant.driver_name.empty()) {
       throw core::DriverError("the remote server " + where + " has no device " + what);

@@ -45,7 +45,9 @@ RemoteDevice read_remote_device(std::uint16_t interface, std::string_view host, 
                                 int index);
 
 struct PassthroughTimings {
-  // Connecting and subscribing at setup (the server waits for it).
+  // Connecting, the banner and subscribing at setup, all within this. The
+  // client opening the device waits for it; the server's other clients do not
+  // (setup runs off the server's event loop: setup_may_block()).
   std::chrono::milliseconds connect_timeout{2000};
   // A forwarded request's reply; a remote that does not answer in time is
   // treated as lost (a late reply would be taken for the next one's).
@@ -59,6 +61,8 @@ class PassthroughDriver final : public core::ThreadedDriver {
   explicit PassthroughDriver(RemoteDevice remote, PassthroughTimings timings = {});
 
   [[nodiscard]] const RemoteDevice& remote() const { return remote_; }
+  // Connecting to the remote takes up to the connect timeout.
+  [[nodiscard]] bool setup_may_block() const override { return true; }
 
  protected:
   void open() override;

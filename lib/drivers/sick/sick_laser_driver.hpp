@@ -39,6 +39,8 @@ class SickLaserDriver final : public core::ThreadedDriver {
   ~SickLaserDriver() override;
 
   [[nodiscard]] const SickDriverSettings& settings() const { return settings_; }
+  // open() probes baud rates and brings the laser up: seconds.
+  [[nodiscard]] bool setup_may_block() const override { return true; }
 
   // bytes_in, bytes_out, telegrams, checksum_errors, resyncs, bytes_dropped,
   // timeouts, reconnects (lost lasers found again), scans (published).
