@@ -9,8 +9,7 @@ namespace playerkit::localization {
 
 namespace {
 
-constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
-constexpr double kRadiansPerHundredthDegree = kRadiansPerDegree / 100.0;
+constexpr double kRadiansPerHundredthDegree = geometry::kRadiansPerDegree / 100.0;
 
 std::int32_t to_int32(double value) {
   constexpr double lo = std::numeric_limits<std::int32_t>::min();
@@ -31,7 +30,7 @@ constexpr std::array<double, 3> kWireScale{kMillimetresPerMetre, kMillimetresPer
 
 geometry::Pose2 odometry_pose(const protocol::PositionData& data) {
   return {data.xpos / kMillimetresPerMetre, data.ypos / kMillimetresPerMetre,
-          geometry::normalize_angle(data.yaw * kRadiansPerDegree)};
+          geometry::normalize_angle(data.yaw * geometry::kRadiansPerDegree)};
 }
 
 amcl::LaserScan laser_scan(const protocol::LaserData& data, const geometry::Pose2& sensor_pose,

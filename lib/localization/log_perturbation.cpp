@@ -99,7 +99,8 @@ struct CarmenOdometryField {
   bool from_laser = false;
 };
 
-geometry::Pose2 to_pose(const log::CarmenPose& pose) { return {pose.x, pose.y, pose.theta}; }
+// The yaw as written (not wrapped), so that an unperturbed field prints back unchanged.
+geometry::Pose2 pose_as_logged(const log::CarmenPose& pose) { return {pose.x, pose.y, pose.theta}; }
 
 PerturbationSummary perturb_carmen(const std::filesystem::path& path, std::ostream& out,
                                    const OdometryErrorModel& model, std::uint64_t seed) {
@@ -119,17 +120,17 @@ PerturbationSummary perturb_carmen(const std::filesystem::path& path, std::ostre
       const auto parsed = log::parse_carmen_line(line, lines.name(), lines.number());
       if (const auto* record = std::get_if<log::CarmenRecord>(&parsed)) {
         if (const auto* odom = std::get_if<log::CarmenOdometry>(record)) {
-          field = CarmenOdometryField{1, to_pose(odom->pose), false};
+          field = CarmenOdometryField{1, pose_as_logged(odom->pose), false};
         } else if (const auto* truepos = std::get_if<log::CarmenTruePos>(record)) {
-          field = CarmenOdometryField{4, to_pose(truepos->odometry_pose), false};
+          field = CarmenOdometryField{4, pose_as_logged(truepos->odometry_pose), false};
         } else if (const auto* laser = std::get_if<log::CarmenLaser>(record)) {
           if (const auto first = carmen_odometry_token(*laser)) {
-            field = CarmenOdometryField{*first, to_pose(*laser->robot_pose), true};
+            field = CarmenOdometryField{*first, pose_as_logged(*laser->robot_pose), true};
           }
           const bool front = laser->kind == log::CarmenLaserKind::kFlaser ||
                              laser->kind == log::CarmenLaserKind::kRobotLaser1;
           if (front && laser->laser_pose) {
-            const geometry::Pose2 truth = to_pose(*laser->laser_pose);
+            const geometry::Pose2 truth = pose_as_logged(*laser->laser_pose);
             summary.truth_path_m += path_step(last_truth, truth);
             last_truth = truth;
           }

@@ -19,7 +19,8 @@
 namespace playerkit::localization {
 namespace {
 
-constexpr double kRadiansPerHundredthDegree = std::numbers::pi / 18000.0;
+// Player's laser angles are hundredths of a degree.
+constexpr double kRadiansPerLaserAngleUnit = std::numbers::pi / 18000.0;
 
 // x y yaw of a position or truth line, from the text: the wire structs hold
 // whole degrees, the text 0.001 rad.
@@ -32,8 +33,8 @@ LoggedScan scan_from_laser(const protocol::Message& message, double time, double
   const auto data = protocol::decode<protocol::LaserData>(message.payload);
   LoggedScan scan;
   scan.time = time;
-  scan.angle_min = data.min_angle * kRadiansPerHundredthDegree;
-  scan.angle_increment = data.resolution * kRadiansPerHundredthDegree;
+  scan.angle_min = data.min_angle * kRadiansPerLaserAngleUnit;
+  scan.angle_increment = data.resolution * kRadiansPerLaserAngleUnit;
   scan.max_range = max_range;
   const double metres_per_unit = (data.range_res == 0 ? 1.0 : data.range_res) * 0.001;
   scan.ranges.reserve(data.range_count);

@@ -14,7 +14,6 @@
 namespace playerkit::log {
 namespace {
 
-std::string quoted(std::string_view text) { return "'" + text::excerpt(text) + "'"; }
 
 // What a field is called in an error message ("odometry theta", "range 17"),
 // put into a string only when there is an error: a 361-reading line costs none.
@@ -53,7 +52,7 @@ class FieldCursor {
     const auto parsed = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (parsed.ec != std::errc{} || parsed.ptr != digits.data() + digits.size() ||
         !std::isfinite(value)) {
-      fields_.fail(next_, name.str() + ": expected a number, got " + quoted(text));
+      fields_.fail(next_, name.str() + ": expected a number, got " + quoted_excerpt(text));
     }
     ++next_;
     return value;

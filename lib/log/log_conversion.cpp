@@ -1,4 +1,5 @@
 #include "log/log_conversion.hpp"
+#include "log/text_log_units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,11 +18,12 @@
 namespace playerkit::log {
 namespace {
 
+using namespace text_log_units;
+
 using protocol::DeviceAddress;
 using protocol::Message;
 using protocol::Timestamp;
 
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 
 template <typename Int>
 Int rounded(double value, const char* what) {

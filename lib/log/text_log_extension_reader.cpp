@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "log/text_log_extensions.hpp"
+#include "log/text_log_units.hpp"
 #include "protocol/binary_codec.hpp"
 #include "protocol/interfaces.hpp"
 #include "protocol/messages/blobfinder.hpp"
@@ -17,10 +18,9 @@
 namespace playerkit::log {
 namespace {
 
+using namespace text_log_units;
+
 constexpr std::size_t kFirst = 6;  // the first field after the prefix
-constexpr double kMmPerM = 1000.0;
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
-constexpr double kArcsecPerRad = 3600.0 * kDegPerRad;
 
 // A leading count at `i`, at most `max`, followed by exactly count groups of
 // `group` fields: the number of items.

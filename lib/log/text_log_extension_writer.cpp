@@ -2,6 +2,7 @@
 #include <stdexcept>
 
 #include "log/text_log_extensions.hpp"
+#include "log/text_log_units.hpp"
 #include "log/text_log_printf.hpp"
 #include "protocol/binary_codec.hpp"
 #include "protocol/interfaces.hpp"
@@ -17,8 +18,8 @@
 namespace playerkit::log {
 namespace {
 
-double mm_to_m(double mm) { return mm / 1000.0; }
-double deg_to_rad(double deg) { return deg * std::numbers::pi / 180.0; }
+using namespace text_log_units;
+
 double arcsec_to_rad(double arcsec) { return deg_to_rad(arcsec / 3600.0); }
 
 void append_wifi(std::string& line, const protocol::WifiData& wifi) {

@@ -15,7 +15,6 @@ bool is_separator(char c) {
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
-std::string quoted(std::string_view text) { return "'" + text::excerpt(text) + "'"; }
 
 // "%.0f" without a locale or a minus zero: wire values in messages.
 std::string whole(double value) {
@@ -60,7 +59,7 @@ void LineFields::at(std::size_t i, std::string_view what) const {
 
 void LineFields::expect_end(std::size_t end, std::string_view after) const {
   if (fields_.size() > end) {
-    fail(end, "unexpected field " + quoted(fields_[end].text) + " after " + std::string(after));
+    fail(end, "unexpected field " + quoted_excerpt(fields_[end].text) + " after " + std::string(after));
   }
 }
 
@@ -78,7 +77,7 @@ protocol::Timestamp LineFields::timestamp(std::size_t i, std::string_view what) 
   };
   if (seconds.empty() || !all_digits(seconds) || !all_digits(fraction) ||
       (dot != std::string_view::npos && fraction.empty())) {
-    fail(i, std::string(what) + ": expected seconds like 1086000000.250, got " + quoted(text));
+    fail(i, std::string(what) + ": expected seconds like 1086000000.250, got " + quoted_excerpt(text));
   }
   std::uint64_t sec = 0;
   const auto parsed = std::from_chars(seconds.data(), seconds.data() + seconds.size(), sec);
@@ -117,7 +116,7 @@ double LineFields::number(std::size_t i, std::string_view what, bool allow_expon
       std::from_chars(digits.data(), digits.data() + digits.size(), value,
                       allow_exponent ? std::chars_format::general : std::chars_format::fixed);
   if (parsed.ec != std::errc{} || parsed.ptr != digits.data() + digits.size() || !std::isfinite(value)) {
-    fail(i, std::string(what) + ": expected a number, got " + quoted(text));
+    fail(i, std::string(what) + ": expected a number, got " + quoted_excerpt(text));
   }
   return value;
 }
@@ -135,7 +134,7 @@ long long LineFields::integer_in(std::size_t i, std::string_view what, long long
                 std::to_string(min) + ".." + std::to_string(max));
   }
   if (parsed.ec != std::errc{} || parsed.ptr != text.data() + text.size()) {
-    fail(i, std::string(what) + ": expected a whole number, got " + quoted(text));
+    fail(i, std::string(what) + ": expected a whole number, got " + quoted_excerpt(text));
   }
   return value;
 }
@@ -150,5 +149,7 @@ double LineFields::rounded_in(std::size_t i, std::string_view what, double wire_
   }
   return value;
 }
+
+std::string quoted_excerpt(std::string_view text) { return "'" + text::excerpt(text) + "'"; }
 
 }  // namespace playerkit::log

@@ -76,4 +76,8 @@ class LineFields {
   std::vector<Field> fields_;
 };
 
+// 'text' for an error message: control characters escaped, long text cut
+// (text::excerpt).
+std::string quoted_excerpt(std::string_view text);
+
 }  // namespace playerkit::log

@@ -1,4 +1,5 @@
 #include "log/text_log_reader.hpp"
+#include "log/text_log_units.hpp"
 
 #include <array>
 #include <cmath>
@@ -22,14 +23,13 @@
 namespace playerkit::log {
 namespace {
 
+using namespace text_log_units;
+
 using protocol::kLaserMaxSamples;
 
 // File units to wire units.
-constexpr double kMmPerM = 1000.0;
 constexpr double kCmPerM = 100.0;
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 constexpr double kHundredthDegPerRad = 100.0 * kDegPerRad;
-constexpr double kArcsecPerRad = 3600.0 * kDegPerRad;
 constexpr double kGpsUnitsPerDeg = 60.0 * 60.0 * 60.0;
 constexpr double kHdopWirePerHdop = 10.0;
 // 1.5 wrote the gps time as time_sec + time_sec * 1e-6; dividing undoes it.

@@ -1,4 +1,5 @@
 #include "log/text_log_writer.hpp"
+#include "log/text_log_units.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -20,11 +21,11 @@
 namespace playerkit::log {
 namespace {
 
+using namespace text_log_units;
+
 // The unit conversions of 1.5's writelog, with its order of operations, so the
 // last printed digit rounds the same way it did there.
-double mm_to_m(double mm) { return mm / 1000.0; }
 double cm_to_m(double cm) { return cm / 100.0; }
-double deg_to_rad(double deg) { return deg * std::numbers::pi / 180.0; }
 
 double seconds(std::uint32_t sec, std::uint32_t usec) {
   return static_cast<double>(sec) + static_cast<double>(usec) * 1e-6;

@@ -13,8 +13,6 @@ nlohmann::json raw_json(std::span<const std::uint8_t> payload) {
   return {{"raw", std::vector<std::uint8_t>(payload.begin(), payload.end())}};
 }
 
-bool is_raw(const nlohmann::json& j) { return j.is_object() && j.size() == 1 && j.contains("raw"); }
-
 std::vector<std::uint8_t> raw_bytes(const nlohmann::json& j) {
   std::vector<std::uint8_t> bytes;
   const auto& array = j.at("raw");
@@ -94,7 +92,7 @@ nlohmann::json payload_to_json(std::uint16_t interface, MessageType type,
 
 std::vector<std::uint8_t> request_payload(const InterfaceMessages& messages, const RequestKind& kind,
                                           const nlohmann::json& fields) {
-  if (is_raw(fields)) return raw_bytes(fields);
+  if (is_raw_payload_json(fields)) return raw_bytes(fields);
   if (kind.form == RequestForm::kQuery || !kind.request) {
     const bool only_subtype =
         fields.is_null() || (fields.is_object() && (fields.empty() || (fields.size() == 1 && fields.contains("subtype"))));
@@ -113,7 +111,7 @@ std::vector<std::uint8_t> request_payload(const InterfaceMessages& messages, con
 std::vector<std::uint8_t> payload_from_json(std::uint16_t interface, MessageType type,
                                             const nlohmann::json& j,
                                             std::optional<std::uint16_t> request_subtype) {
-  if (is_raw(j)) return raw_bytes(j);
+  if (is_raw_payload_json(j)) return raw_bytes(j);
   if (type == MessageType::kSynch) return {};
   const auto* messages = find_messages(interface);
   if (!messages) {
@@ -140,6 +138,10 @@ std::vector<std::uint8_t> payload_from_json(std::uint16_t interface, MessageType
                     " struct; give {\"raw\": [...]}");
   }
   return codec->from_json(j);
+}
+
+bool is_raw_payload_json(const nlohmann::json& j) {
+  return j.is_object() && j.size() == 1 && j.contains("raw");
 }
 
 }  // namespace playerkit::protocol

@@ -18,6 +18,9 @@
 
 namespace playerkit::protocol {
 
+// True for {"raw": [bytes]}: a payload given as bytes rather than fields.
+bool is_raw_payload_json(const nlohmann::json& j);
+
 // The request kind a request payload belongs to, read from its leading subtype.
 const RequestKind* request_kind_of(std::uint16_t interface, std::span<const std::uint8_t> payload);
 

@@ -277,11 +277,9 @@ const PayloadCodec* codec_for(std::uint16_t interface, MessageType type, std::sp
   }
 }
 
-bool is_raw(const nlohmann::json& j) { return j.is_object() && j.size() == 1 && j.contains("raw"); }
-
 void convert_payload_json(std::uint16_t interface, MessageType type, std::span<const std::uint8_t> payload,
                           std::optional<std::uint16_t> request_subtype, nlohmann::json& j) {
-  if (is_raw(j)) return;
+  if (is_raw_payload_json(j)) return;
   if (const PayloadCodec* codec = codec_for(interface, type, payload, request_subtype)) {
     convert_struct(codec->wire_name, j);
   }

@@ -14,7 +14,6 @@
 namespace playerkit::amcl_offline {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 std::vector<double> parse_numbers(const std::string& text, std::size_t count, const std::string& what) {
   std::vector<double> values;
@@ -104,7 +103,7 @@ void apply_filter_flags(const LocalizeCommand& command, amcl::AmclParameters& fi
   if (command.update_thresh) {
     const auto thresholds = parse_numbers(*command.update_thresh, 2, "--update-thresh");
     filter.update_min_distance = thresholds[0];
-    filter.update_min_angle = thresholds[1] * kDegree;
+    filter.update_min_angle = thresholds[1] * geometry::kRadiansPerDegree;
   }
   if (command.sigma_hit) filter.sigma_hit = *command.sigma_hit;
   check_filter(filter);
@@ -118,7 +117,7 @@ localization::InitialBelief initial_belief(const LocalizeCommand& command) {
     if (sigma[0] <= 0 || sigma[1] <= 0 || sigma[2] <= 0) throw UsageError("--init-var: every deviation must be > 0");
     initial.sigma_x_m = sigma[0];
     initial.sigma_y_m = sigma[1];
-    initial.sigma_yaw_rad = sigma[2] * kDegree;
+    initial.sigma_yaw_rad = sigma[2] * geometry::kRadiansPerDegree;
   }
   if (command.global) {
     initial.kind = localization::InitialBelief::Kind::global;
@@ -129,7 +128,7 @@ localization::InitialBelief initial_belief(const LocalizeCommand& command) {
   } else {
     const auto pose = parse_numbers(*command.init_pose, 3, "--init-pose");
     initial.kind = localization::InitialBelief::Kind::pose;
-    initial.pose = {pose[0], pose[1], geometry::normalize_angle(pose[2] * kDegree)};
+    initial.pose = {pose[0], pose[1], geometry::normalize_angle(pose[2] * geometry::kRadiansPerDegree)};
   }
   return initial;
 }

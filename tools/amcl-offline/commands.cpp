@@ -22,7 +22,6 @@ namespace playerkit::amcl_offline {
 
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 using tools::OutputFile;
 
@@ -49,7 +48,7 @@ int run_perturb(const PerturbCommand& command, std::ostream& out, std::ostream& 
   output.commit();
   err << std::fixed << std::setprecision(2) << "amcl-offline: " << summary.odometry_poses_changed
       << " odometry poses degraded over " << summary.truth_path_m << " m; final drift "
-      << summary.final_position_drift_m << " m, " << summary.final_heading_drift_rad / kDegree << " deg\n";
+      << summary.final_position_drift_m << " m, " << summary.final_heading_drift_rad / geometry::kRadiansPerDegree << " deg\n";
   return kExitOk;
 }
 
@@ -122,7 +121,7 @@ int run_eval(const EvalCommand& command, std::ostream& out, std::ostream& err) {
   const auto row = [&](const char* name, const localization::ErrorStatistics& stats) {
     out << std::left << std::setw(18) << name << std::right << std::fixed << std::setprecision(3) << std::setw(8)
         << stats.position_rmse_m << std::setw(8) << stats.position_max_m << std::setprecision(2) << std::setw(9)
-        << stats.heading_rmse_rad / kDegree << std::setw(9) << stats.heading_max_rad / kDegree << std::setw(8)
+        << stats.heading_rmse_rad / geometry::kRadiansPerDegree << std::setw(9) << stats.heading_max_rad / geometry::kRadiansPerDegree << std::setw(8)
         << stats.count << "\n";
   };
   out << "matched " << result.matched << " of " << result.estimates << " estimates";
@@ -140,7 +139,7 @@ int run_eval(const EvalCommand& command, std::ostream& out, std::ostream& err) {
     out << "\n";
   } else {
     out << "never converged (within " << result.options.converged_position_m << " m and "
-        << result.options.converged_heading_rad / kDegree << " deg)\n";
+        << result.options.converged_heading_rad / geometry::kRadiansPerDegree << " deg)\n";
   }
   (void)err;
   return kExitOk;

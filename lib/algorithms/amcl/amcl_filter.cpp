@@ -9,7 +9,7 @@
 namespace playerkit::amcl {
 namespace {
 
-std::shared_ptr<const grid::OccupancyGrid> require_map(
+std::shared_ptr<const grid::OccupancyGrid> require_nonempty_map(
     std::shared_ptr<const grid::OccupancyGrid> map) {
   if (!map || map->empty()) throw std::invalid_argument("AmclFilter: no map");
   return map;
@@ -25,7 +25,7 @@ const AmclParameters& validated(const AmclParameters& parameters) {
 AmclFilter::AmclFilter(AmclParameters parameters, std::shared_ptr<const grid::OccupancyGrid> map,
                        std::uint64_t seed)
     : parameters_(validated(parameters)),
-      map_(require_map(std::move(map))),
+      map_(require_nonempty_map(std::move(map))),
       rng_(seed),
       free_space_(*map_),
       recovery_(parameters_.alpha_slow, parameters_.alpha_fast) {

@@ -9,7 +9,7 @@ namespace playerkit::amcl {
 
 namespace {
 
-const grid::OccupancyGrid& require_map(const std::shared_ptr<const grid::OccupancyGrid>& map) {
+const grid::OccupancyGrid& require_map_for_beams(const std::shared_ptr<const grid::OccupancyGrid>& map) {
   if (!map) throw std::invalid_argument("BeamModel: no map");
   return *map;
 }
@@ -17,7 +17,7 @@ const grid::OccupancyGrid& require_map(const std::shared_ptr<const grid::Occupan
 }  // namespace
 
 BeamModel::BeamModel(std::shared_ptr<const grid::OccupancyGrid> map)
-    : caster_(require_map(map), grid::RayStop::occupied_or_unknown) {}
+    : caster_(require_map_for_beams(map), grid::RayStop::occupied_or_unknown) {}
 
 double BeamModel::log_beam_likelihood(double range, bool no_return, double expected,
                                       double max_range, const LaserModelSettings& settings) {

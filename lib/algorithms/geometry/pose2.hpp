@@ -9,6 +9,9 @@
 
 namespace playerkit::geometry {
 
+// Flags and reports speak degrees; everything inside speaks radians.
+inline constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
+
 // Wraps an angle into (-pi, pi].
 inline double normalize_angle(double angle) {
   angle = std::remainder(angle, 2.0 * std::numbers::pi);

@@ -12,7 +12,7 @@
 namespace playerkit::hardware::p2os {
 namespace {
 
-constexpr std::string_view kName = "P2OS SERAUX packet";
+constexpr std::string_view kSerAuxName = "P2OS SERAUX packet";
 
 bool is_aux_type(std::uint8_t type) {
   return type == packet_type::serial_aux || type == packet_type::serial_aux2;
@@ -30,11 +30,11 @@ void check_no_start_byte(const std::array<std::uint8_t, N>& message, std::string
 
 std::vector<std::uint8_t> encode_aux_serial(const AuxSerialPacket& packet) {
   if (!is_aux_type(packet.type)) {
-    throw EncodeError(std::string(kName) + ": type " + detail::hex_byte(packet.type) +
+    throw EncodeError(std::string(kSerAuxName) + ": type " + detail::hex_byte(packet.type) +
                       " is neither SERAUX 0xB0 nor SERAUX2 0xB8");
   }
   if (1 + packet.data.size() + kChecksumSize > kMaxLengthByteFromRobot) {
-    throw EncodeError(std::string(kName) + ": " + std::to_string(packet.data.size()) +
+    throw EncodeError(std::string(kSerAuxName) + ": " + std::to_string(packet.data.size()) +
                       " data bytes do not fit one packet");
   }
   std::vector<std::uint8_t> out{packet.type};
@@ -43,10 +43,10 @@ std::vector<std::uint8_t> encode_aux_serial(const AuxSerialPacket& packet) {
 }
 
 AuxSerialPacket decode_aux_serial(std::span<const std::uint8_t> payload) {
-  detail::ByteCursor in(payload, kName);
+  detail::ByteCursor in(payload, kSerAuxName);
   const std::uint8_t type = in.u8("type");
   if (!is_aux_type(type)) {
-    throw DecodeError(std::string(kName) + ": packet type " + detail::hex_byte(type) +
+    throw DecodeError(std::string(kSerAuxName) + ": packet type " + detail::hex_byte(type) +
                       " is neither SERAUX 0xB0 nor SERAUX2 0xB8");
   }
   const auto data = in.rest();

@@ -12,7 +12,7 @@
 namespace playerkit::hardware::p2os {
 namespace {
 
-constexpr std::string_view kName = "P2OS GYROPAC";
+constexpr std::string_view kGyroName = "P2OS GYROPAC";
 
 }  // namespace
 
@@ -26,7 +26,7 @@ std::optional<int> GyroPacket::average_rate() const {
 std::vector<std::uint8_t> encode_gyro_packet(const GyroPacket& packet) {
   const std::size_t size = 2 + 3 * packet.readings.size();
   if (packet.readings.size() > 0xFF || size + kChecksumSize > kMaxLengthByteFromRobot) {
-    throw EncodeError(std::string(kName) + ": " + std::to_string(packet.readings.size()) +
+    throw EncodeError(std::string(kGyroName) + ": " + std::to_string(packet.readings.size()) +
                       " readings do not fit one packet");
   }
   std::vector<std::uint8_t> out{packet_type::gyro,
@@ -40,11 +40,11 @@ std::vector<std::uint8_t> encode_gyro_packet(const GyroPacket& packet) {
 }
 
 GyroPacket decode_gyro_packet(std::span<const std::uint8_t> payload) {
-  detail::ByteCursor in(payload, kName);
-  detail::expect_type(in, packet_type::gyro, kName);
+  detail::ByteCursor in(payload, kGyroName);
+  detail::expect_type(in, packet_type::gyro, kGyroName);
   const std::uint8_t count = in.u8("count");
   if (in.remaining() != 3u * count) {
-    throw DecodeError(std::string(kName) + ": count " + std::to_string(count) + " needs " +
+    throw DecodeError(std::string(kGyroName) + ": count " + std::to_string(count) + " needs " +
                       std::to_string(3u * count) + " bytes of readings, the payload has " +
                       std::to_string(in.remaining()));
   }

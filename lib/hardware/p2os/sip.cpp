@@ -10,17 +10,17 @@
 namespace playerkit::hardware::p2os {
 namespace {
 
-constexpr std::string_view kName = "P2OS standard SIP";
+constexpr std::string_view kSipName = "P2OS standard SIP";
 
 }  // namespace
 
 std::vector<std::uint8_t> encode_sip(const StandardSip& sip) {
   if (!is_standard_sip(sip.status)) {
-    throw EncodeError(std::string(kName) + ": status " + detail::hex_byte(sip.status) +
+    throw EncodeError(std::string(kSipName) + ": status " + detail::hex_byte(sip.status) +
                       " is not a SIP type (0x30 ... 0x34)");
   }
   if (sip.sonar.size() > 0xFF) {
-    throw EncodeError(std::string(kName) + ": " + std::to_string(sip.sonar.size()) +
+    throw EncodeError(std::string(kSipName) + ": " + std::to_string(sip.sonar.size()) +
                       " sonar readings do not fit the count byte");
   }
   std::vector<std::uint8_t> out;
@@ -49,18 +49,18 @@ std::vector<std::uint8_t> encode_sip(const StandardSip& sip) {
   out.push_back(sip.digital_out);
   out.insert(out.end(), sip.trailing.begin(), sip.trailing.end());
   if (out.size() + kChecksumSize > kMaxLengthByteFromRobot) {
-    throw EncodeError(std::string(kName) + ": " + std::to_string(out.size()) +
+    throw EncodeError(std::string(kSipName) + ": " + std::to_string(out.size()) +
                       " payload bytes do not fit a frame");
   }
   return out;
 }
 
 StandardSip decode_sip(std::span<const std::uint8_t> payload) {
-  detail::ByteCursor in(payload, kName);
+  detail::ByteCursor in(payload, kSipName);
   StandardSip sip;
   sip.status = in.u8("STATUS");
   if (!is_standard_sip(sip.status)) {
-    throw DecodeError(std::string(kName) + ": packet type " + detail::hex_byte(sip.status) +
+    throw DecodeError(std::string(kSipName) + ": packet type " + detail::hex_byte(sip.status) +
                       " is not a SIP (0x30 ... 0x34)");
   }
   sip.x_position = in.u16("XPOS");

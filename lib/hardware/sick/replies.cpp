@@ -1,16 +1,15 @@
 #include "hardware/sick/replies.hpp"
 
+#include "hardware/sick/byte_fields.hpp"
+
 #include <algorithm>
 #include <cstdio>
 
 namespace playerkit::hardware::sick {
+using detail::byte_hex;
+using detail::append_le16;
+using detail::load_le16;
 namespace {
-
-std::string byte_hex(std::uint8_t byte) {
-  char digits[4];
-  std::snprintf(digits, sizeof digits, "%02X", byte);
-  return digits;
-}
 
 void expect_code(const Reply& reply, std::uint8_t code, const char* what) {
   if (reply.code != code) {
@@ -26,15 +25,6 @@ void expect_data(const Reply& reply, std::size_t size, const char* what) {
                         std::to_string(size) + " data bytes, got " +
                         std::to_string(reply.data.size()));
   }
-}
-
-void append_le16(std::vector<std::uint8_t>& out, std::uint16_t value) {
-  out.push_back(static_cast<std::uint8_t>(value & 0xFFu));
-  out.push_back(static_cast<std::uint8_t>(value >> 8));
-}
-
-std::uint16_t load_le16(const std::vector<std::uint8_t>& bytes, std::size_t at) {
-  return static_cast<std::uint16_t>(bytes[at] | (bytes[at + 1] << 8));
 }
 
 bool acceptance(std::uint8_t byte) { return byte != 0; }

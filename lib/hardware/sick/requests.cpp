@@ -1,26 +1,16 @@
 #include "hardware/sick/requests.hpp"
 
+#include "hardware/sick/byte_fields.hpp"
+
 #include "hardware/sick/telegram.hpp"
 
 #include <cstdio>
 
 namespace playerkit::hardware::sick {
+using detail::append_le16;
+using detail::load_le16;
+using detail::byte_hex;
 namespace {
-
-void append_le16(std::vector<std::uint8_t>& out, std::uint16_t value) {
-  out.push_back(static_cast<std::uint8_t>(value & 0xFFu));
-  out.push_back(static_cast<std::uint8_t>(value >> 8));
-}
-
-std::uint16_t load_le16(std::span<const std::uint8_t> bytes, std::size_t at) {
-  return static_cast<std::uint16_t>(bytes[at] | (bytes[at + 1] << 8));
-}
-
-std::string byte_hex(std::uint8_t byte) {
-  char digits[4];
-  std::snprintf(digits, sizeof digits, "%02X", byte);
-  return digits;
-}
 
 template <class... Visitors>
 struct Overloaded : Visitors... {

@@ -1,18 +1,13 @@
 #include "hardware/sick/scan.hpp"
 
+#include "hardware/sick/byte_fields.hpp"
+
 #include <cstdio>
 
 namespace playerkit::hardware::sick {
+using detail::append_le16;
+using detail::load_le16;
 namespace {
-
-void append_le16(std::vector<std::uint8_t>& out, std::uint16_t value) {
-  out.push_back(static_cast<std::uint8_t>(value & 0xFFu));
-  out.push_back(static_cast<std::uint8_t>(value >> 8));
-}
-
-std::uint16_t load_le16(const std::vector<std::uint8_t>& bytes, std::size_t at) {
-  return static_cast<std::uint16_t>(bytes[at] | (bytes[at + 1] << 8));
-}
 
 constexpr int kPartialScanShift = 11;
 constexpr int kUnitShift = 14;

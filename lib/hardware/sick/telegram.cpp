@@ -1,20 +1,15 @@
 #include "hardware/sick/telegram.hpp"
 
+#include "hardware/sick/byte_fields.hpp"
+
 #include "hardware/sick/crc.hpp"
 
 #include <cstdio>
 
 namespace playerkit::hardware::sick {
+using detail::append_le16;
+using detail::load_le16;
 namespace {
-
-std::uint16_t load_le16(const std::uint8_t* bytes) {
-  return static_cast<std::uint16_t>(bytes[0] | (bytes[1] << 8));
-}
-
-void append_le16(std::vector<std::uint8_t>& out, std::uint16_t value) {
-  out.push_back(static_cast<std::uint8_t>(value & 0xFFu));
-  out.push_back(static_cast<std::uint8_t>(value >> 8));
-}
 
 std::vector<std::uint8_t> frame(std::uint8_t address, std::span<const std::uint8_t> body_start,
                                 std::span<const std::uint8_t> body_rest = {},
@@ -49,14 +44,14 @@ std::span<const std::uint8_t> checked_body(std::span<const std::uint8_t> telegra
     std::snprintf(expected, sizeof expected, "%02X", address);
     throw fail(std::string("address is not ") + expected);
   }
-  const std::size_t length = load_le16(&telegram[2]);
+  const std::size_t length = load_le16(telegram, 2);
   if (telegram.size() != kHeaderSize + length + kCrcSize) {
     throw fail("LEN " + std::to_string(length) + " says " +
                std::to_string(kHeaderSize + length + kCrcSize) + " bytes, got " +
                std::to_string(telegram.size()));
   }
   const std::size_t covered = kHeaderSize + length;
-  const std::uint16_t sent = load_le16(&telegram[covered]);
+  const std::uint16_t sent = load_le16(telegram, covered);
   const std::uint16_t computed = crc16(telegram.first(covered));
   if (sent != computed) {
     char numbers[48];
