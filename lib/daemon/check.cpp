@@ -16,6 +16,16 @@ void check_served(const core::DeviceTable& devices, const std::string& config_pa
   }
 }
 
+core::DriverSpec replay_driver_spec(const ServeOptions& options, core::ManualClock& clock) {
+  return drivers::readlog_driver_spec({.log = *options.readlog,
+                                       .speed = options.readlog_speed,
+                                       .clock = &clock,
+                                       .timer = nullptr,
+                                       .data_queue = options.readlog_data_queue,
+                                       .duration = options.readlog_duration,
+                                       .burst = options.readlog_burst});
+}
+
 CheckedConfiguration check_configuration(const ServeOptions& options) {
   core::Logger logger(options.program_name);
   logger.set_level(core::LogLevel::kError);
@@ -23,13 +33,7 @@ CheckedConfiguration check_configuration(const ServeOptions& options) {
   core::ManualClock clock;
   if (options.readlog) {
     check_replay_log(*options.readlog);
-    registry.add(drivers::readlog_driver_spec({.log = *options.readlog,
-                                               .speed = options.readlog_speed,
-                                               .clock = &clock,
-                                               .timer = nullptr,
-                                               .data_queue = options.readlog_data_queue,
-                                               .duration = options.readlog_duration,
-                                               .burst = options.readlog_burst}));
+    registry.add(replay_driver_spec(options, clock));
   }
   const auto load_options = core::load_options_for(registry, options.port);
   CheckedConfiguration checked{

@@ -20,6 +20,8 @@
 #include <vector>
 
 #include "config/config_file.hpp"
+#include "core/clock.hpp"
+#include "core/driver_registry.hpp"
 #include "core/device_table.hpp"
 #include "daemon/serve.hpp"
 
@@ -34,6 +36,9 @@ struct CheckedConfiguration {
 // Throws config::ConfigError (file:line:col, or the file for the whole),
 // std::runtime_error naming the -r log, core::PluginError.
 CheckedConfiguration check_configuration(const ServeOptions& options);
+
+// The readlog driver -r serves, replaying on `clock` (check and serve alike).
+core::DriverSpec replay_driver_spec(const ServeOptions& options, core::ManualClock& clock);
 
 // The -r log is one readlog can replay (drivers::first_replay_time). Throws
 // std::runtime_error naming the file.

@@ -8,7 +8,6 @@
 #include "core/instantiate.hpp"
 #include "core/plugin.hpp"
 #include "daemon/check.hpp"
-#include "drivers/logfile/readlog_driver.hpp"
 #include "server/server.hpp"
 
 namespace playerkit::daemon {
@@ -31,13 +30,7 @@ Daemon::Daemon(ServeOptions options) : options_(std::move(options)), logger_(opt
       throw DaemonError(ServeResult::bad_configuration, e.what());
     }
     // Replaces a plugin's readlog too: -r names what the built-in one replays.
-    registry_.add(drivers::readlog_driver_spec({.log = *options_.readlog,
-                                                .speed = options_.readlog_speed,
-                                                .clock = &log_clock_,
-                                                .timer = nullptr,
-                                                .data_queue = options_.readlog_data_queue,
-                                                .duration = options_.readlog_duration,
-                                                .burst = options_.readlog_burst}));
+    registry_.add(replay_driver_spec(options_, log_clock_));
   }
   // With -r every header time the server writes is log time: the readlog
   // reader of that file sets log_clock as it replays (logfile-format.md §5).

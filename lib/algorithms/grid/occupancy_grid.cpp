@@ -40,15 +40,7 @@ CellState OccupancyGrid::state_at_world(const Eigen::Vector2d& point) const {
 }
 
 Eigen::Vector2i OccupancyGrid::world_to_cell(const Eigen::Vector2d& point) const {
-  // Clamp before converting: a far-away or non-finite point must not overflow int.
-  auto to_index = [](double cells) {
-    constexpr double limit = 1.0e9;
-    if (!(cells > -limit)) return static_cast<int>(-limit);
-    if (!(cells < limit)) return static_cast<int>(limit);
-    return static_cast<int>(std::floor(cells));
-  };
-  const Eigen::Vector2d cells = (point - origin_) / resolution_;
-  return {to_index(cells.x()), to_index(cells.y())};
+  return cell_containing(point, origin_, resolution_);
 }
 
 Eigen::Vector2d OccupancyGrid::cell_centre(const Eigen::Vector2i& cell) const {

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <stdexcept>
@@ -36,6 +37,20 @@ class GridTooLarge : public std::length_error {
   std::int64_t width_;
   std::int64_t height_;
 };
+
+// The cell holding `point` on a grid of this origin and resolution. Clamps
+// before converting: a far-away or non-finite point must not overflow int.
+inline Eigen::Vector2i cell_containing(const Eigen::Vector2d& point, const Eigen::Vector2d& origin,
+                                       double resolution) {
+  const auto to_index = [](double cells) {
+    constexpr double limit = 1.0e9;
+    if (!(cells > -limit)) return static_cast<int>(-limit);
+    if (!(cells < limit)) return static_cast<int>(limit);
+    return static_cast<int>(std::floor(cells));
+  };
+  const Eigen::Vector2d cells = (point - origin) / resolution;
+  return {to_index(cells.x()), to_index(cells.y())};
+}
 
 // "a map of W x H cells (N million) is more than the limit of 50 million"
 std::string too_many_cells_message(std::int64_t width, std::int64_t height);

@@ -155,14 +155,7 @@ double ClearanceMap::at(int col, int row) const {
 }
 
 Eigen::Vector2i ClearanceMap::cell_of(const Eigen::Vector2d& point) const {
-  const auto to_index = [](double cells) {
-    constexpr double limit = 1.0e9;
-    if (!(cells > -limit)) return static_cast<int>(-limit);
-    if (!(cells < limit)) return static_cast<int>(limit);
-    return static_cast<int>(std::floor(cells));
-  };
-  const Eigen::Vector2d cells = (point - origin_) / resolution_;
-  return {to_index(cells.x()), to_index(cells.y())};
+  return grid::cell_containing(point, origin_, resolution_);
 }
 
 Eigen::Vector2d ClearanceMap::cell_centre(int col, int row) const {
