@@ -161,11 +161,15 @@ TEST(PioneerSquare, AClientDrivesTheEmulatedRobotAroundASquareThroughTheServer) 
   while (auto message = client.read(10ms)) readings.take(*message);
 
   // Back where it started, within what closing each leg on 10 Hz odometry
-  // (one degree or a centimetre per leg, whole degrees on the wire) allows.
+  // allows: whole degrees on the wire, and each stop comes one odometry
+  // period plus the client's scheduling delay late. On a loaded machine that
+  // delay reaches a few hundred milliseconds; at the slowest turn rate
+  // (0.1 rad/s, the slowest the robot's integer wheel speeds still turn at)
+  // four turns then overshoot by up to about 0.12 rad.
   const geometry::Pose2 end = hardware.true_pose();
   EXPECT_NEAR(end.x, start.x, 0.1);
   EXPECT_NEAR(end.y, start.y, 0.1);
-  EXPECT_NEAR(geometry::angle_difference(end.yaw, start.yaw), 0.0, 0.1);
+  EXPECT_NEAR(geometry::angle_difference(end.yaw, start.yaw), 0.0, 0.15);
 
   // The client's odometry is the robot's motion (no odometry error is
   // configured): it ends where the true pose ends, up to the wire's 1 mm and
