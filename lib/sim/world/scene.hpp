@@ -1,0 +1,79 @@
+#pragma once
+// What sensors may ask of the world at one instant: the static map and the
+// models' bodies where they stand now. The world (world.hpp) keeps one
+// Scene up to date as models move; sensors (laser.hpp, sonar.hpp, ...) are
+// functions of a const Scene&.
+//
+// 2-D throughout: Stage 3/4 test rays against heights (a laser on a Pioneer
+// sees over other Pioneers' bodies); here every body is as tall as the
+// walls, so rays see every body they cross (docs/compatibility.md).
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "algorithms/geometry/pose2.hpp"
+#include "algorithms/grid/occupancy_grid.hpp"
+#include "algorithms/grid/range_caster.hpp"
+#include "sim/world/model_spec.hpp"
+
+namespace playerkit::sim {
+
+// One model as sensors see it.
+struct SceneModel {
+  ModelId id = kNoModel;
+  ModelId root = kNoModel;       // its top-level ancestor (itself at top level)
+  geometry::Pose2 pose{};        // the model's global pose
+  geometry::Pose2 body_pose{};   // the body's centre: pose composed with body.offset
+  Body body{};
+  Rgb color{};
+  Returns returns{};
+  bool present = true;           // false once consumed by a gripper
+};
+
+struct RayHit {
+  double range = 0.0;        // max_range when nothing was met
+  ModelId model = kNoModel;  // the model hit; kNoModel for a wall or nothing
+  bool wall = false;         // stopped by an occupied map cell
+};
+
+// Which models a ray may stop on, besides walls (which always stop it).
+using ModelFilter = std::function<bool(const SceneModel&)>;
+
+class Scene {
+ public:
+  Scene() = default;
+  // Occupied cells are walls; free and unknown cells are open. The map
+  // also sets the ray and collision resolution.
+  explicit Scene(grid::OccupancyGrid map);
+
+  [[nodiscard]] const grid::OccupancyGrid& map() const { return map_; }
+
+  // The first wall cell or model body a ray meets. Models of the tree of
+  // `ignore_root` (the sensor's own robot) are never hit; others only where
+  // `stops` says so (nullptr: those with a body and ranger return >= 0).
+  [[nodiscard]] RayHit cast(const Eigen::Vector2d& origin, double angle, double max_range,
+                            ModelId ignore_root, const ModelFilter& stops = nullptr) const;
+
+  // Every model, indexed by id.
+  [[nodiscard]] std::span<const SceneModel> models() const { return models_; }
+  [[nodiscard]] const SceneModel& model(ModelId id) const { return models_.at(static_cast<std::size_t>(id)); }
+
+  // Models whose body comes within `radius` of `centre` (a broad phase for
+  // fiducial finders and collisions; may return a few more).
+  [[nodiscard]] std::vector<ModelId> models_near(const Eigen::Vector2d& centre, double radius) const;
+
+  // Kept by the world as models are added, move or vanish.
+  void add(SceneModel model);
+  void update(ModelId id, const geometry::Pose2& pose);
+  void set_present(ModelId id, bool present);
+
+ private:
+  grid::OccupancyGrid map_;
+  grid::RangeCaster walls_;
+  std::vector<SceneModel> models_;
+};
+
+}  // namespace playerkit::sim
