@@ -17,6 +17,7 @@
 #include "algorithms/geometry/pose2.hpp"
 #include "algorithms/grid/occupancy_grid.hpp"
 #include "algorithms/grid/range_caster.hpp"
+#include "sim/world/body_index.hpp"
 #include "sim/world/model_spec.hpp"
 
 namespace playerkit::sim {
@@ -64,16 +65,22 @@ class Scene {
   // Models whose body comes within `radius` of `centre` (a broad phase for
   // fiducial finders and collisions; may return a few more).
   [[nodiscard]] std::vector<ModelId> models_near(const Eigen::Vector2d& centre, double radius) const;
+  // The same, in id order, into `near` (cleared first): no allocation once
+  // it has grown, for queries every step.
+  void models_near(const Eigen::Vector2d& centre, double radius, std::vector<ModelId>& near) const;
 
   // Kept by the world as models are added, move or vanish.
   void add(SceneModel model);
   void update(ModelId id, const geometry::Pose2& pose);
   void set_present(ModelId id, bool present);
+  // A model carried by a gripper joins the carrier's tree (and leaves it).
+  void set_root(ModelId id, ModelId root);
 
  private:
   grid::OccupancyGrid map_;
   grid::RangeCaster walls_;
   std::vector<SceneModel> models_;
+  BodyIndex index_;  // the broad phase of cast() and models_near()
 };
 
 }  // namespace playerkit::sim
