@@ -1,0 +1,226 @@
+#include "sim/worldfile/world_loader_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "map/map_file.hpp"
+#include "sim/worldfile/worldfile_error.hpp"
+#include "text/printable.hpp"
+
+namespace playerkit::sim::worldfile {
+namespace {
+
+// Cell edges and wall edges that coincide in exact arithmetic may differ by
+// rounding; a wall only touching a cell must not occupy it.
+constexpr double kEdgeTolerance = 1e-9;
+
+// The cell range [first, last] whose interiors overlap [low, high].
+std::pair<long long, long long> overlapped_cells(double low, double high, double origin, double resolution) {
+  const double first = std::floor((low - origin) / resolution + kEdgeTolerance);
+  const double last = std::ceil((high - origin) / resolution - kEdgeTolerance) - 1.0;
+  constexpr double limit = 1e12;
+  return {static_cast<long long>(std::clamp(first, -limit, limit)),
+          static_cast<long long>(std::clamp(last, -limit, limit))};
+}
+
+std::array<Eigen::Vector2d, 4> corners_of(const WallRectangle& wall) {
+  const Eigen::Vector2d half = wall.size / 2.0;
+  return {wall.centre.transform({-half.x(), -half.y()}), wall.centre.transform({half.x(), -half.y()}),
+          wall.centre.transform({half.x(), half.y()}), wall.centre.transform({-half.x(), half.y()})};
+}
+
+// Separating-axis test of a turned rectangle against an axis-aligned cell:
+// do their interiors overlap?
+bool wall_overlaps_cell(const std::array<Eigen::Vector2d, 4>& corners, const Eigen::Vector2d& cell_low,
+                        double resolution) {
+  const std::array<Eigen::Vector2d, 4> cell = {cell_low, cell_low + Eigen::Vector2d(resolution, 0.0),
+                                               cell_low + Eigen::Vector2d(resolution, resolution),
+                                               cell_low + Eigen::Vector2d(0.0, resolution)};
+  const std::array<Eigen::Vector2d, 4> axes = {Eigen::Vector2d::UnitX(), Eigen::Vector2d::UnitY(),
+                                               (corners[1] - corners[0]).normalized(),
+                                               (corners[3] - corners[0]).normalized()};
+  for (const Eigen::Vector2d& axis : axes) {
+    if (!axis.allFinite()) continue;  // a degenerate wall: its other axis decides
+    double wall_low = std::numeric_limits<double>::infinity(), wall_high = -wall_low;
+    double cell_min = wall_low, cell_max = -wall_low;
+    for (const auto& point : corners) {
+      wall_low = std::min(wall_low, axis.dot(point));
+      wall_high = std::max(wall_high, axis.dot(point));
+    }
+    for (const auto& point : cell) {
+      cell_min = std::min(cell_min, axis.dot(point));
+      cell_max = std::max(cell_max, axis.dot(point));
+    }
+    if (std::min(wall_high, cell_max) - std::max(wall_low, cell_min) <= kEdgeTolerance * resolution) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void mark_wall(grid::OccupancyGrid& grid, const WallRectangle& wall) {
+  const auto corners = corners_of(wall);
+  Eigen::Vector2d low = corners[0], high = corners[0];
+  for (const auto& corner : corners) {
+    low = low.cwiseMin(corner);
+    high = high.cwiseMax(corner);
+  }
+  const double resolution = grid.resolution();
+  const auto [first_col, last_col] = overlapped_cells(low.x(), high.x(), grid.origin().x(), resolution);
+  const auto [first_row, last_row] = overlapped_cells(low.y(), high.y(), grid.origin().y(), resolution);
+  const long long col_begin = std::max(first_col, 0LL), col_end = std::min(last_col, grid.width() - 1LL);
+  const long long row_begin = std::max(first_row, 0LL), row_end = std::min(last_row, grid.height() - 1LL);
+  const double turn = std::fmod(std::abs(wall.centre.yaw), std::numbers::pi / 2.0);
+  const bool axis_aligned = turn < 1e-12 || std::numbers::pi / 2.0 - turn < 1e-12;
+  for (long long row = row_begin; row <= row_end; ++row) {
+    for (long long col = col_begin; col <= col_end; ++col) {
+      const int c = static_cast<int>(col), r = static_cast<int>(row);
+      if (!axis_aligned) {
+        const Eigen::Vector2d cell_low = grid.origin() + Eigen::Vector2d(static_cast<double>(col) * resolution,
+                                                                         static_cast<double>(row) * resolution);
+        if (!wall_overlaps_cell(corners, cell_low, resolution)) continue;
+      }
+      grid.set(c, r, grid::CellState::occupied);
+    }
+  }
+}
+
+std::vector<WallRectangle> walls_of_bitmap(const BitmapPlacement& bitmap, double& finest_pixel,
+                                           std::vector<std::string>& warnings) {
+  map::MapLoadOptions options;
+  options.resolution = 1.0;  // only the pixels are used
+  if (bitmap.walls == WallPixels::non_zero) {
+    options.negate = true;  // occupancy v / 255: above 0 for any non-zero pixel
+    options.occupied_threshold = 0.0;
+  } else {
+    options.occupied_threshold = 0.5;  // (255 - v) / 255 > 0.5 exactly when v <= 127
+  }
+  options.free_threshold = 0.0;
+  grid::OccupancyGrid pixels;
+  try {
+    pixels = map::load_map(bitmap.file, options);
+  } catch (const map::MapFileError& error) {
+    throw WorldFileError(bitmap.where, std::string("cannot read the bitmap: ") + error.what());
+  }
+  const auto wall_at = [&](int col, int row) { return pixels.at(col, row) == grid::CellState::occupied; };
+
+  double sx = 0.0, sy = 0.0, centre_x = 0.0, centre_y = 0.0;
+  if (bitmap.metres_per_pixel) {
+    sx = sy = *bitmap.metres_per_pixel;
+    if (bitmap.centred) {
+      centre_x = pixels.width() / 2.0;
+      centre_y = pixels.height() / 2.0;
+    }
+  } else {
+    int first_col = pixels.width(), last_col = -1, first_row = pixels.height(), last_row = -1;
+    for (int row = 0; row < pixels.height(); ++row) {
+      for (int col = 0; col < pixels.width(); ++col) {
+        if (!wall_at(col, row)) continue;
+        first_col = std::min(first_col, col);
+        last_col = std::max(last_col, col);
+        first_row = std::min(first_row, row);
+        last_row = std::max(last_row, row);
+      }
+    }
+    if (last_col < 0) {
+      warnings.push_back(located(bitmap.where, "the bitmap " + text::excerpt(bitmap.file.filename().string()) +
+                                                   " has no dark pixels: no walls"));
+      return {};
+    }
+    sx = bitmap.stretch_to.x() / (last_col + 1 - first_col);
+    sy = bitmap.stretch_to.y() / (last_row + 1 - first_row);
+    centre_x = (first_col + last_col + 1) / 2.0;
+    centre_y = (first_row + last_row + 1) / 2.0;
+  }
+  if (!(sx > 0.0) || !(sy > 0.0)) return {};
+  finest_pixel = finest_pixel > 0.0 ? std::min({finest_pixel, sx, sy}) : std::min(sx, sy);
+
+  std::vector<WallRectangle> walls;
+  for (int row = 0; row < pixels.height(); ++row) {
+    for (int col = 0; col < pixels.width();) {
+      if (!wall_at(col, row)) {
+        ++col;
+        continue;
+      }
+      const int run_start = col;
+      while (col < pixels.width() && wall_at(col, row)) ++col;
+      const Eigen::Vector2d local_centre(((run_start + col) / 2.0 - centre_x) * sx, (row + 0.5 - centre_y) * sy);
+      const Eigen::Vector2d centre = bitmap.pose.transform(local_centre);
+      walls.push_back(WallRectangle{{centre.x(), centre.y(), bitmap.pose.yaw},
+                                    {(col - run_start) * sx, sy}});
+    }
+  }
+  return walls;
+}
+
+grid::OccupancyGrid build_map(const MapPlan& plan, std::vector<std::string>& warnings) {
+  const double infinity = std::numeric_limits<double>::infinity();
+  Eigen::Vector2d low(infinity, infinity), high(-infinity, -infinity);
+  for (const WallRectangle& wall : plan.walls) {
+    for (const auto& corner : corners_of(wall)) {
+      low = low.cwiseMin(corner);
+      high = high.cwiseMax(corner);
+    }
+  }
+  for (const Eigen::Vector2d& point : plan.must_cover) {
+    low = low.cwiseMin(point);
+    high = high.cwiseMax(point);
+  }
+  const bool empty = !(low.x() <= high.x());
+  if (plan.positive_quadrant) {
+    low = Eigen::Vector2d::Zero();
+    high = (empty ? Eigen::Vector2d::Zero() : high).cwiseMax(plan.minimum_size).cwiseMax(3.0 * plan.resolution);
+  } else if (empty) {
+    low = Eigen::Vector2d(-5.0, -5.0);
+    high = Eigen::Vector2d(5.0, 5.0);
+  } else {
+    // Stage 3/4 worlds are unbounded: a margin around what is there.
+    constexpr double margin = 1.0;
+    low -= Eigen::Vector2d::Constant(margin);
+    high += Eigen::Vector2d::Constant(margin);
+  }
+  if (!low.allFinite() || !high.allFinite()) throw WorldFileError(plan.where, "the world's extent is not finite");
+
+  double resolution = plan.resolution;
+  const auto cells_along = [&](double length, double cell) { return std::max(1.0, std::ceil(length / cell - 1e-6)); };
+  const auto cell_count = [&](double cell) {
+    return cells_along(high.x() - low.x(), cell) * cells_along(high.y() - low.y(), cell);
+  };
+  const double wanted = cell_count(resolution);
+  if (wanted > static_cast<double>(grid::kMaxGridCells)) {
+    double factor = std::ceil(std::sqrt(wanted / static_cast<double>(grid::kMaxGridCells)));
+    while (cell_count(plan.resolution * factor) > static_cast<double>(grid::kMaxGridCells)) factor += 1.0;
+    resolution = plan.resolution * factor;
+    const std::string area = std::to_string(high.x() - low.x()) + " x " + std::to_string(high.y() - low.y()) + " m";
+    if (plan.finest_pixel > 0.0 && resolution > plan.finest_pixel * (1.0 + 1e-9)) {
+      throw WorldFileError(plan.where, "the world covers " + area + ": at a cell of " + std::to_string(plan.resolution) +
+                                           " m it needs " + std::to_string(static_cast<long long>(wanted)) +
+                                           " cells, more than the limit of " + std::to_string(grid::kMaxGridCells) +
+                                           ", and a cell coarser than the bitmap's pixel (" +
+                                           std::to_string(plan.finest_pixel) + " m) would lose walls");
+    }
+    warnings.push_back(located(plan.where, "the map's cell is " + std::to_string(resolution) + " m instead of " +
+                                               std::to_string(plan.resolution) + " m: the world covers " + area +
+                                               ", which would need more than " +
+                                               std::to_string(grid::kMaxGridCells) + " cells"));
+  }
+  const int width = static_cast<int>(cells_along(high.x() - low.x(), resolution));
+  const int height = static_cast<int>(cells_along(high.y() - low.y(), resolution));
+  grid::OccupancyGrid map(width, height, resolution, low, grid::CellState::free);
+  for (const WallRectangle& wall : plan.walls) mark_wall(map, wall);
+  if (plan.positive_quadrant && width >= 3 && height >= 3) {
+    // Stage 1.3 closes every world with a wall one cell inside its border.
+    for (int col = 1; col <= width - 2; ++col) {
+      map.set(col, 1, grid::CellState::occupied);
+      map.set(col, height - 2, grid::CellState::occupied);
+    }
+    for (int row = 1; row <= height - 2; ++row) {
+      map.set(1, row, grid::CellState::occupied);
+      map.set(width - 2, row, grid::CellState::occupied);
+    }
+  }
+  return map;
+}
+
+}  // namespace playerkit::sim::worldfile
