@@ -1,0 +1,120 @@
+#include "sim/worldfile/world_loader_map.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sim/worldfile/worldfile_error.hpp"
+
+namespace playerkit::sim::worldfile {
+namespace world_loader_map_test {
+
+using grid::CellState;
+
+grid::OccupancyGrid empty_grid() { return grid::OccupancyGrid(40, 40, 0.1, {0.0, 0.0}, CellState::free); }
+
+int occupied_cells(const grid::OccupancyGrid& grid) {
+  int count = 0;
+  for (const CellState state : grid.cells()) count += state == CellState::occupied;
+  return count;
+}
+
+TEST(WorldLoaderMapWalls, AnAxisAlignedWallOccupiesTheCellsItOverlaps) {
+  grid::OccupancyGrid grid = empty_grid();
+  // x in [1.0, 1.5], y in [2.05, 2.25]: columns 10-14, rows 20-22 (row 22 only partly).
+  mark_wall(grid, {{1.25, 2.15, 0.0}, {0.5, 0.2}});
+  EXPECT_EQ(occupied_cells(grid), 5 * 3);
+  EXPECT_EQ(grid.at(10, 20), CellState::occupied);
+  EXPECT_EQ(grid.at(14, 22), CellState::occupied);
+  EXPECT_EQ(grid.at(9, 21), CellState::free);   // touches x = 1.0 only
+  EXPECT_EQ(grid.at(15, 21), CellState::free);  // touches x = 1.5 only
+  EXPECT_EQ(grid.at(12, 23), CellState::free);
+  // Turned by a right angle it is the same rectangle on its side.
+  grid::OccupancyGrid turned = empty_grid();
+  mark_wall(turned, {{1.25, 2.15, std::numbers::pi / 2}, {0.2, 0.5}});
+  EXPECT_TRUE(std::equal(grid.cells().begin(), grid.cells().end(), turned.cells().begin()));
+}
+
+TEST(WorldLoaderMapWalls, ATurnedWallOccupiesExactlyTheCellsItOverlaps) {
+  grid::OccupancyGrid grid = empty_grid();
+  const WallRectangle wall{{2.0, 2.0, 0.6}, {1.7, 0.13}};
+  mark_wall(grid, wall);
+  // Independently: a cell is hit if any of a fine lattice of points inside
+  // the wall falls inside the cell; a cell whose centre region the wall
+  // misses by more than the lattice step is not.
+  std::vector<int> hits(grid.cells().size(), 0);
+  const double c = std::cos(wall.centre.yaw), s = std::sin(wall.centre.yaw);
+  for (double u = -0.85 + 0.0005; u < 0.85; u += 0.001) {
+    for (double v = -0.065 + 0.0005; v < 0.065; v += 0.001) {
+      const double x = 2.0 + c * u - s * v, y = 2.0 + s * u + c * v;
+      ++hits[grid.index(static_cast<int>(std::floor(x / 0.1)), static_cast<int>(std::floor(y / 0.1)))];
+    }
+  }
+  int disagreements = 0;
+  for (std::size_t i = 0; i < hits.size(); ++i) {
+    const bool occupied = grid.cells()[i] == CellState::occupied;
+    // A sliver thinner than the lattice step may be missed by the lattice.
+    if (occupied != (hits[i] > 0) && !(occupied && hits[i] == 0)) ++disagreements;
+    if (hits[i] > 3) {
+      EXPECT_TRUE(occupied) << i;
+    }
+  }
+  EXPECT_EQ(disagreements, 0);
+  EXPECT_GT(occupied_cells(grid), 17);
+}
+
+TEST(WorldLoaderMapBuild, Stage13WorldsArePositiveAndClosed) {
+  MapPlan plan;
+  plan.resolution = 0.5;
+  plan.positive_quadrant = true;
+  plan.minimum_size = {4.0, 3.0};
+  plan.must_cover = {{5.2, 1.0}};
+  std::vector<std::string> warnings;
+  const grid::OccupancyGrid map = build_map(plan, warnings);
+  EXPECT_EQ(map.origin(), Eigen::Vector2d::Zero());
+  EXPECT_EQ(map.width(), 11);  // 5.2 m
+  EXPECT_EQ(map.height(), 6);  // 3 m
+  EXPECT_EQ(map.at(0, 0), CellState::free);
+  EXPECT_EQ(map.at(1, 1), CellState::occupied);
+  EXPECT_EQ(map.at(9, 4), CellState::occupied);
+  EXPECT_EQ(map.at(5, 2), CellState::free);
+  EXPECT_TRUE(warnings.empty());
+}
+
+TEST(WorldLoaderMapBuild, Stage4WorldsHaveAMarginAroundWhatIsThere) {
+  MapPlan plan;
+  plan.resolution = 0.1;
+  plan.walls = {{{-2.0, 3.0, 0.0}, {1.0, 1.0}}};
+  plan.must_cover = {{4.0, 3.0}};
+  std::vector<std::string> warnings;
+  const grid::OccupancyGrid map = build_map(plan, warnings);
+  EXPECT_NEAR(map.origin().x(), -3.5, 1e-9);
+  EXPECT_NEAR(map.origin().y(), 1.5, 1e-9);
+  EXPECT_EQ(map.state_at_world({-2.0, 3.0}), CellState::occupied);
+  EXPECT_EQ(map.state_at_world({4.9, 3.9}), CellState::free);
+}
+
+TEST(WorldLoaderMapBuild, AHugeWorldGetsCoarserCellsButNeverCoarserThanItsBitmap) {
+  MapPlan plan;
+  plan.resolution = 0.02;
+  plan.walls = {{{0.0, 0.0, 0.0}, {300.0, 300.0}}};  // 15000 x 15000 cells at 2 cm
+  std::vector<std::string> warnings;
+  const grid::OccupancyGrid map = build_map(plan, warnings);
+  EXPECT_LE(static_cast<std::int64_t>(map.width()) * map.height(), grid::kMaxGridCells);
+  EXPECT_NEAR(map.resolution(), 0.06, 1e-12);  // 302 m / 0.06 = 5034 cells a side
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("the map's cell is 0.060000 m instead of 0.020000 m"), std::string::npos) << warnings[0];
+  plan.finest_pixel = 0.05;
+  plan.where = SourceLocation{"big.world"};
+  try {
+    build_map(plan, warnings);
+    FAIL() << "no error";
+  } catch (const WorldFileError& error) {
+    EXPECT_NE(std::string(error.what()).find("big.world: the world covers 302.000000 x 302.000000 m"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
+}  // namespace world_loader_map_test
+}  // namespace playerkit::sim::worldfile
