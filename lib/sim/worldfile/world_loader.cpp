@@ -27,7 +27,8 @@ WorldDescription describe_tree(const WorldTree& tree, const std::filesystem::pat
                       .models = {},
                       .devices = {},
                       .map = {},
-                      .names = {}};
+                      .names = {},
+                      .siblings = {}};
   context.settings.seed = options.seed;
   context.map.where = tree.world.where;
   if (context.dialect == Dialect::stage13) {
@@ -62,8 +63,19 @@ std::string_view dialect_name(Dialect dialect) {
   return "Stage";
 }
 
-std::string LoadContext::unique_name(const std::string& wanted, const SourceLocation& where) {
-  if (wanted.empty() || names.insert(wanted).second) return wanted;
+std::string LoadContext::model_name(const std::string& given, const std::string& type, int parent,
+                                    const SourceLocation& where) {
+  const std::string prefix = parent < 0 ? "" : models.at(static_cast<std::size_t>(parent)).name + ".";
+  const int sibling = siblings[{parent, type}]++;
+  std::string wanted;
+  if (given.empty()) {
+    wanted = prefix + type + ":" + std::to_string(sibling);
+  } else if (given.front() == '/') {
+    wanted = given.substr(1);
+  } else {
+    wanted = prefix + given;
+  }
+  if (names.insert(wanted).second) return wanted;
   for (int copy = 2;; ++copy) {
     std::string renamed = wanted + "#" + std::to_string(copy);
     if (names.insert(renamed).second) {

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <map>
 #include <set>
 #include <span>
 #include <string>
@@ -41,14 +42,20 @@ struct LoadContext {
   std::vector<DeviceEntity> devices;
   MapPlan map;
   std::set<std::string, std::less<>> names;  // given so far
+  std::map<std::pair<int, std::string>, int> siblings;  // (parent, type) -> models so far
 
   int add_model(ModelSpec spec) {
     models.push_back(std::move(spec));
     return static_cast<int>(models.size()) - 1;
   }
 
-  // `wanted`, or (with a warning) `wanted#2`, `wanted#3`... when taken.
-  std::string unique_name(const std::string& wanted, const SourceLocation& where);
+  // A model's name as Stage 4 gives it (§2.1): `given` at top level,
+  // "<parent>.<given>" for a child unless `given` starts with '/' (then the
+  // rest), and without `given` "<type>:<n>" (under the parent's name for a
+  // child), n counting earlier siblings of the type. A name already taken
+  // becomes (with a warning) "name#2", "name#3"...: sim::World wants unique
+  // names, and Stage's lookups found only the last of equal names anyway.
+  std::string model_name(const std::string& given, const std::string& type, int parent, const SourceLocation& where);
 
   // The error for an entity type that is neither a model type of the
   // dialect nor a macro: "unknown macro or model type "pioneer2x" (did you

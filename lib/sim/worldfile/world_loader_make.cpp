@@ -1,8 +1,5 @@
 #include "sim/worldfile/world_loader.hpp"
 
-// Apart from the rest of the loader: the one file that needs sim::World's
-// code, so that programs describing worlds only do not link it.
-
 namespace playerkit::sim::worldfile {
 
 LoadedWorld make_world(WorldDescription description) {

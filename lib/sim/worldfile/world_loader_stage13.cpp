@@ -203,7 +203,7 @@ class Stage13Reader {
   void model(const Entity& entity, const Stage13Type& type, PropertyReader& properties, const Stage13Parent& parent) {
     ModelSpec spec;
     spec.type = entity.type;
-    spec.name = context_.unique_name(properties.text("name", ""), entity.where);
+    spec.name = context_.model_name(properties.text("name", ""), entity.type, parent.model, entity.where);
     spec.parent = parent.model;
     spec.pose = pose_of(properties);
 
@@ -291,6 +291,7 @@ class Stage13Reader {
     ModelSpec truth;
     truth.type = "truth";
     truth.parent = robot.model;
+    truth.name = context_.model_name("", truth.type, robot.model, where);
     truth.port = robot.port;
     truth.body.present = false;
     truth.returns.obstacle = false;

@@ -89,7 +89,7 @@ class Stage4Reader {
     ModelSpec spec;
     spec.type = entity.type;
     spec.parent = parent.model;
-    spec.name = context_.unique_name(model_name(entity, properties, parent), entity.where);
+    spec.name = context_.model_name(properties.text("name", ""), entity.type, parent.model, entity.where);
     if (const auto pose = properties.tuple("pose", {kLength, kLength, kLength, kAngle}, "[x y z a]")) {
       spec.pose = {(*pose)[0], (*pose)[1], geometry::normalize_angle((*pose)[3])};
     }
@@ -115,17 +115,6 @@ class Stage4Reader {
     }
     for (const Entity& child : entity.children) read(child, here);
     if (robot) add_truth(here, entity.where);
-  }
-
-  // §2.1: "x", "parent.x" (unless "/x"), or "<type>:<n>" counting earlier
-  // siblings of that type.
-  std::string model_name(const Entity& entity, PropertyReader& properties, const Stage4Parent& parent) {
-    const std::string prefix = parent.model < 0 ? "" : parent.name + ".";
-    const int sibling = siblings_[{parent.model, entity.type}]++;
-    const std::string given = properties.text("name", "");
-    if (given.empty()) return prefix + entity.type + ":" + std::to_string(sibling);
-    if (given.front() == '/') return given.substr(1);
-    return prefix + given;
   }
 
   void body_and_looks(const Entity& entity, PropertyReader& properties, const Stage4Parent& parent, ModelSpec& spec) {
@@ -415,8 +404,8 @@ class Stage4Reader {
   void add_truth(const Stage4Parent& robot, const SourceLocation& where) {
     ModelSpec truth;
     truth.type = "truth";
-    truth.name = context_.unique_name(robot.name + ".truth", where);
     truth.parent = robot.model;
+    truth.name = context_.model_name("", truth.type, robot.model, where);
     truth.body.present = false;
     truth.returns.obstacle = false;
     truth.returns.ranger = -1.0;
@@ -428,7 +417,6 @@ class Stage4Reader {
   }
 
   LoadContext& context_;
-  std::map<std::pair<int, std::string>, int> siblings_;
   int robots_ = 0;
 };
 

@@ -103,7 +103,7 @@ TEST(WorldLoaderDevices, EveryRobotHasATruthDevice) {
   const WorldDescription world = describe_text("position ( pose [0 0 0 0] )\nposition ( name \"b\" pose [1 0 0 0] )");
   EXPECT_EQ(device_list(world), (std::vector<std::string>{"6665:4:0 position", "6665:15:0 truth", "6665:4:1 position",
                                                           "6665:15:1 truth"}));
-  EXPECT_EQ(model_named(world, "b.truth").parent, 2);
+  EXPECT_EQ(model_named(world, "b.truth:0").parent, 2);
 }
 
 TEST(WorldLoaderModels, Stage4NamesFollowStage) {
@@ -113,8 +113,8 @@ TEST(WorldLoaderModels, Stage4NamesFollowStage) {
   std::vector<std::string> names;
   for (const ModelSpec& model : world.models) names.push_back(model.name);
   EXPECT_EQ(names, (std::vector<std::string>{"position:0", "position:0.ranger:0", "position:0.front", "global",
-                                             "position:0.ranger:3", "position:0.truth", "position:1",
-                                             "position:1.truth", "x", "x#2"}));
+                                             "position:0.ranger:3", "position:0.truth:0", "position:1",
+                                             "position:1.truth:0", "x", "x#2"}));
   EXPECT_NE(std::find(world.warnings.begin(), world.warnings.end(),
                       "t.world:4:1: the name \"x\" is taken; this model is named \"x#2\""),
             world.warnings.end());
