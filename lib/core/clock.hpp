@@ -1,7 +1,9 @@
 #pragma once
 // Where "now" comes from. Every header time the server writes is read from one
-// Clock: the wall clock normally, the log's clock when replaying (readlog sets
-// a ManualClock as it goes), a ManualClock in tests.
+// Clock, the core::ServerClock (server_clock.hpp): the wall clock normally, the
+// log's clock when replaying (readlog sets a ManualClock as it goes and claims
+// the server clock with it), simulation time when simulating, a ManualClock in
+// tests.
 
 #include <atomic>
 #include <cstdint>

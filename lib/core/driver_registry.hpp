@@ -16,6 +16,7 @@
 #include "core/device.hpp"
 #include "core/driver.hpp"
 #include "core/logger.hpp"
+#include "core/server_clock.hpp"
 #include "core/shared_connection.hpp"
 
 namespace playerkit::core {
@@ -29,7 +30,9 @@ struct DriverContext {
   DeviceKey key;                   // the device being created
   std::string robot_name;
   DeviceTable& devices;  // other devices, for drivers built on them (amcl, writelog)
-  const Clock& clock;
+  // The server's clock; a family that keeps time of its own (a log replay, a
+  // simulation) claims it here (server_clock.hpp).
+  ServerClock& clock;
   Logger& logger;
   // Connections shared by the devices of one robot (shared_connection.hpp).
   ConnectionPool& connections;

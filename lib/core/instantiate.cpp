@@ -30,7 +30,7 @@ config::LoadOptions load_options_for(const DriverRegistry& registry, std::uint16
 }
 
 void instantiate_devices(const config::ConfigFile& config, const DriverRegistry& registry,
-                         DeviceTable& devices, const Clock& clock, Logger& logger) {
+                         DeviceTable& devices, ServerClock& clock, Logger& logger) {
   for (const config::DeviceDeclaration& declaration : config.devices()) {
     const DriverSpec* spec = registry.find(declaration.driver);
     if (spec == nullptr) {
@@ -54,6 +54,8 @@ void instantiate_devices(const config::ConfigFile& config, const DriverRegistry&
       driver = spec->factory(context);
     } catch (const config::ConfigError&) {
       throw;
+    } catch (const ClockClaimError& e) {
+      throw config::ConfigError(declaration.where, e.what());
     } catch (const std::exception& e) {
       throw config::ConfigError(declaration.where,
                                 "driver '" + spec->name + "' could not be created: " + e.what());

@@ -7,6 +7,7 @@
 #include "core/device_table.hpp"
 #include "core/driver_registry.hpp"
 #include "core/logger.hpp"
+#include "core/server_clock.hpp"
 
 namespace playerkit::core {
 
@@ -16,9 +17,11 @@ config::LoadOptions load_options_for(const DriverRegistry& registry, std::uint16
 
 // Adds a device per declaration of `config` to `devices`. Throws
 // config::ConfigError (file:line:col) for a driver that is not registered,
-// does not serve the declared interface, or fails while reading its options.
+// does not serve the declared interface, fails while reading its options, or
+// claims `clock` when another device's clock holds it (a second replay or
+// simulation keeping the server's time).
 void instantiate_devices(const config::ConfigFile& config, const DriverRegistry& registry,
-                         DeviceTable& devices, const Clock& clock, Logger& logger);
+                         DeviceTable& devices, ServerClock& clock, Logger& logger);
 
 // Driver::check() on the device of every declaration of `config`, once all
 // are instantiated. Throws config::ConfigError at the declaration of the

@@ -30,7 +30,7 @@ struct InstantiateFixture : ::testing::Test {
     return config::ConfigFile::parse(text, "test.cfg", load_options_for(registry, 7000));
   }
   testing::CallCounts counts;
-  ManualClock clock;
+  ServerClock clock;
   Logger logger;
   DriverRegistry registry;
   DeviceTable table;
@@ -130,6 +130,49 @@ TEST(DriverRegistryTest, LaterRegistrationReplacesAndListingIsSorted) {
   EXPECT_EQ(all[1]->name, "zeta");
   EXPECT_EQ(registry.find("zeta")->summary, "second");
   EXPECT_EQ(registry.find("nope"), nullptr);
+}
+
+// A driver family keeping its own time claims the server clock; the devices
+// of one family share one clock, a second family's is refused at its section.
+struct ClockClaimFixture : InstantiateFixture {
+  void add_claiming_driver(const std::string& name, std::shared_ptr<ManualClock> own_clock) {
+    registry.add(DriverSpec{name, {protocol::kLaserCode, protocol::kPositionCode}, Access::kRead,
+                            [this, name, own_clock](const DriverContext& context) -> std::unique_ptr<Driver> {
+                              context.clock.claim(own_clock, to_string(context.key) + " (" + name + ")");
+                              return std::make_unique<testing::CountingDriver>(counts);
+                            },
+                            {}, ""});
+  }
+};
+
+TEST_F(ClockClaimFixture, DevicesOfOneFamilyShareTheClockTheyClaim) {
+  auto simulation = std::make_shared<ManualClock>(Timestamp{12, 0});
+  add_claiming_driver("simulated", simulation);
+  instantiate_devices(load("laser ( driver \"simulated\" )\nposition ( driver \"simulated\" )\n"), registry,
+                      table, clock, logger);
+  EXPECT_EQ(clock.claimant(), "laser:0@7000 (simulated)");
+  simulation->advance_microseconds(250'000);
+  EXPECT_EQ(clock.now(), (Timestamp{12, 250'000}));
+  // Devices stamp what they publish with the server clock.
+  Device* laser = table.find(7000, {protocol::kLaserCode, 0});
+  ASSERT_NE(laser, nullptr);
+  laser->publish({1, 2, 3});
+  EXPECT_EQ(laser->latest_data()->timestamp, (Timestamp{12, 250'000}));
+}
+
+TEST_F(ClockClaimFixture, ASecondClockIsAConfigErrorAtItsDeviceNamingBoth) {
+  add_claiming_driver("replayed", std::make_shared<ManualClock>(Timestamp{1000, 0}));
+  add_claiming_driver("simulated", std::make_shared<ManualClock>(Timestamp{0, 0}));
+  const auto config = load("laser ( driver \"replayed\" )\n\nposition ( driver \"simulated\" )\n");
+  try {
+    instantiate_devices(config, registry, table, clock, logger);
+    FAIL() << "expected a ConfigError";
+  } catch (const config::ConfigError& e) {
+    EXPECT_EQ(e.where().line, 3);
+    const std::string message = e.what();
+    EXPECT_NE(message.find("laser:0@7000 (replayed)"), std::string::npos) << message;
+    EXPECT_NE(message.find("position:0@7000 (simulated)"), std::string::npos) << message;
+  }
 }
 
 }  // namespace instantiate_test

@@ -28,7 +28,7 @@ struct RobotOptionFixture : ::testing::Test {
   }
   std::optional<config::ConfigFile> file;
   DeviceTable table;
-  ManualClock clock;
+  ServerClock clock;
   Logger logger;
 };
 

@@ -1,7 +1,7 @@
 #include "daemon/check.hpp"
 
 #include "config/errors.hpp"
-#include "core/clock.hpp"
+#include "core/server_clock.hpp"
 #include "core/instantiate.hpp"
 #include "drivers/logfile/readlog_driver.hpp"
 #include "drivers/logfile/replay_session.hpp"
@@ -16,10 +16,9 @@ void check_served(const core::DeviceTable& devices, const std::string& config_pa
   }
 }
 
-core::DriverSpec replay_driver_spec(const ServeOptions& options, core::ManualClock& clock) {
+core::DriverSpec replay_driver_spec(const ServeOptions& options) {
   return drivers::readlog_driver_spec({.log = *options.readlog,
                                        .speed = options.readlog_speed,
-                                       .clock = &clock,
                                        .timer = nullptr,
                                        .data_queue = options.readlog_data_queue,
                                        .duration = options.readlog_duration,
@@ -30,10 +29,9 @@ CheckedConfiguration check_configuration(const ServeOptions& options) {
   core::Logger logger(options.program_name);
   logger.set_level(core::LogLevel::kError);
   core::DriverRegistry registry = load_drivers(options.plugins, logger);
-  core::ManualClock clock;
   if (options.readlog) {
     check_replay_log(*options.readlog);
-    registry.add(replay_driver_spec(options, clock));
+    registry.add(replay_driver_spec(options));
   }
   const auto load_options = core::load_options_for(registry, options.port);
   CheckedConfiguration checked{
@@ -41,6 +39,7 @@ CheckedConfiguration check_configuration(const ServeOptions& options) {
                           : config::ConfigFile::load(options.config_path, load_options),
       {}};
   for (const auto& warning : checked.config.warnings()) checked.warnings.push_back(warning.to_string());
+  core::ServerClock clock;
   core::DeviceTable devices;
   core::instantiate_devices(checked.config, registry, devices, clock, logger);
   core::check_devices(checked.config, devices);

@@ -20,7 +20,6 @@
 #include <vector>
 
 #include "config/config_file.hpp"
-#include "core/clock.hpp"
 #include "core/driver_registry.hpp"
 #include "core/device_table.hpp"
 #include "daemon/serve.hpp"
@@ -37,8 +36,9 @@ struct CheckedConfiguration {
 // std::runtime_error naming the -r log, core::PluginError.
 CheckedConfiguration check_configuration(const ServeOptions& options);
 
-// The readlog driver -r serves, replaying on `clock` (check and serve alike).
-core::DriverSpec replay_driver_spec(const ServeOptions& options, core::ManualClock& clock);
+// The readlog driver -r serves (check and serve alike); its devices claim the
+// server clock with the log's time.
+core::DriverSpec replay_driver_spec(const ServeOptions& options);
 
 // The -r log is one readlog can replay (drivers::first_replay_time). Throws
 // std::runtime_error naming the file.

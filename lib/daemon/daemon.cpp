@@ -30,16 +30,12 @@ Daemon::Daemon(ServeOptions options) : options_(std::move(options)), logger_(opt
       throw DaemonError(ServeResult::bad_configuration, e.what());
     }
     // Replaces a plugin's readlog too: -r names what the built-in one replays.
-    registry_.add(replay_driver_spec(options_, log_clock_));
+    registry_.add(replay_driver_spec(options_));
   }
-  // With -r every header time the server writes is log time: the readlog
-  // reader of that file sets log_clock as it replays (logfile-format.md §5).
-  const core::Clock& clock = options_.readlog ? static_cast<const core::Clock&>(log_clock_)
-                                              : static_cast<const core::Clock&>(wall_clock_);
   server::ServerOptions server_options;
   server_options.bind_address = options_.bind_address;
   server_options.auth_key = options_.auth_key;
-  server_ = std::make_unique<server::Server>(devices_, clock, logger_, server_options);
+  server_ = std::make_unique<server::Server>(devices_, clock_, logger_, server_options);
 }
 
 Daemon::~Daemon() {
@@ -48,50 +44,65 @@ Daemon::~Daemon() {
 }
 
 void Daemon::load() {
-  const core::Clock& clock = options_.readlog ? static_cast<const core::Clock&>(log_clock_)
-                                              : static_cast<const core::Clock&>(wall_clock_);
   const auto fail = [this](ServeResult result, const std::string& message) {
     logger_.error(message);
     throw DaemonError(result, message);
   };
   try {
-    // With -p 0 the port is only known once bound, and devices outside robot
-    // sections are keyed by it: bind first, then read the configuration.
-    default_port_ = options_.port;
-    std::vector<std::uint16_t> bound;
-    if (options_.port == 0) {
-      default_port_ = server_->listen(0);
-      bound.push_back(default_port_);
-    }
-    const auto load_options = core::load_options_for(registry_, default_port_);
-    const auto config = options_.config_text
-                            ? config::ConfigFile::parse(*options_.config_text, options_.config_path, load_options)
-                            : config::ConfigFile::load(options_.config_path, load_options);
-    for (const auto& warning : config.warnings()) logger_.warning(warning.to_string());
-    core::instantiate_devices(config, registry_, devices_, clock, logger_);
-    core::check_devices(config, devices_);
-    for (const auto& warning : config.unused_properties()) logger_.warning(warning.to_string());
-    const auto served = devices_.all();
-    if (options_.readlog && std::none_of(served.begin(), served.end(), [](const core::Device* device) {
-          return device->info().driver_name == "readlog";
-        })) {
-      logger_.warning("-r " + *options_.readlog + ": no device of " + options_.config_path +
-                      " has driver \"readlog\"; nothing is replayed");
-    }
+    bind_default_port();
+    const std::vector<std::uint16_t> ports = create_devices();
+    warn_if_nothing_replayed();
     check_served(devices_, options_.config_path);
-    for (std::uint16_t port : config.ports()) {
-      if (port == 0) {
-        fail(ServeResult::bad_configuration, options_.config_path + ": a robot section with port 0; only -p 0 picks a free port");
-      }
-      if (std::find(bound.begin(), bound.end(), port) == bound.end()) {
-        server_->listen(port);
-        bound.push_back(port);
-      }
+    if (std::find(ports.begin(), ports.end(), 0) != ports.end()) {
+      fail(ServeResult::bad_configuration, options_.config_path + ": a robot section with port 0; only -p 0 picks a free port");
     }
+    bind_ports(ports);
   } catch (const config::ConfigError& e) {
     fail(ServeResult::bad_configuration, e.what());
   } catch (const server::ServerError& e) {
     fail(ServeResult::failed, e.what());
+  }
+}
+
+void Daemon::bind_default_port() {
+  // With -p 0 the port is only known once bound, and devices outside robot
+  // sections are keyed by it: bind first, then read the configuration.
+  default_port_ = options_.port;
+  if (options_.port == 0) {
+    default_port_ = server_->listen(0);
+    bound_ports_.push_back(default_port_);
+  }
+}
+
+std::vector<std::uint16_t> Daemon::create_devices() {
+  const auto load_options = core::load_options_for(registry_, default_port_);
+  const auto config = options_.config_text
+                          ? config::ConfigFile::parse(*options_.config_text, options_.config_path, load_options)
+                          : config::ConfigFile::load(options_.config_path, load_options);
+  for (const auto& warning : config.warnings()) logger_.warning(warning.to_string());
+  // Drivers that keep time of their own claim clock_ here.
+  core::instantiate_devices(config, registry_, devices_, clock_, logger_);
+  core::check_devices(config, devices_);
+  for (const auto& warning : config.unused_properties()) logger_.warning(warning.to_string());
+  return config.ports();
+}
+
+void Daemon::bind_ports(const std::vector<std::uint16_t>& ports) {
+  for (std::uint16_t port : ports) {
+    if (std::find(bound_ports_.begin(), bound_ports_.end(), port) == bound_ports_.end()) {
+      server_->listen(port);
+      bound_ports_.push_back(port);
+    }
+  }
+}
+
+void Daemon::warn_if_nothing_replayed() {
+  if (!options_.readlog) return;
+  const auto served = devices_.all();
+  if (std::none_of(served.begin(), served.end(),
+                   [](const core::Device* device) { return device->info().driver_name == "readlog"; })) {
+    logger_.warning("-r " + *options_.readlog + ": no device of " + options_.config_path +
+                    " has driver \"readlog\"; nothing is replayed");
   }
 }
 

@@ -3,8 +3,8 @@
 // they are served (player-drivers run reads a driver's link counters and
 // traces its bytes); serve() is these steps run until a signal.
 //
-//   daemon::Daemon daemon(options);      // drivers loaded, server made
-//   daemon.load();                       // configuration -> devices, ports bound
+//   daemon::Daemon daemon(options);      // registry: drivers loaded, server made
+//   daemon.load();                       // devices from the configuration, ports bound
 //   daemon.start();                      // prepare, alwayson devices up
 //   std::jthread serving([&] { daemon.run(); });
 //   ... daemon.devices() ..., daemon.stop();
@@ -14,10 +14,11 @@
 #include <stdexcept>
 #include <vector>
 
-#include "core/clock.hpp"
 #include "core/device_table.hpp"
 #include "core/driver_registry.hpp"
 #include "core/logger.hpp"
+#include "core/server_clock.hpp"
+#include "config/config_file.hpp"
 #include "daemon/serve.hpp"
 
 namespace playerkit::server {
@@ -61,16 +62,26 @@ class Daemon {
   [[nodiscard]] core::DeviceTable& devices() { return devices_; }
   [[nodiscard]] const core::DriverRegistry& registry() const { return registry_; }
   [[nodiscard]] core::Logger& logger() { return logger_; }
+  // The wall clock, unless a driver family keeps time of its own (readlog's
+  // -r log, a simulation) and claimed it while the devices were created.
+  [[nodiscard]] const core::ServerClock& clock() const { return clock_; }
 
  private:
+  // The steps of load(), in order. Each throws what it meets.
+  void bind_default_port();
+  // The configuration's devices, checked; the ports its robot sections name.
+  std::vector<std::uint16_t> create_devices();
+  void bind_ports(const std::vector<std::uint16_t>& ports);
+  void warn_if_nothing_replayed();
+
   ServeOptions options_;
   core::Logger logger_;
-  core::WallClock wall_clock_;
-  core::ManualClock log_clock_;
+  core::ServerClock clock_;  // before the devices and the server, which read it
   core::DriverRegistry registry_;
   core::DeviceTable devices_;
   std::unique_ptr<server::Server> server_;
   std::uint16_t default_port_ = 0;
+  std::vector<std::uint16_t> bound_ports_;
 };
 
 }  // namespace playerkit::daemon

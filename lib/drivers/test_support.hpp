@@ -15,6 +15,7 @@
 #include "core/driver_registry.hpp"
 #include "core/instantiate.hpp"
 #include "core/logger.hpp"
+#include "core/server_clock.hpp"
 #include "drivers/builtin.hpp"
 #include "support/eventually.hpp"
 
@@ -49,7 +50,7 @@ struct BuiltinDevices {
     return *found;
   }
 
-  core::WallClock clock;
+  core::ServerClock clock;  // the wall clock unless a driver claims it
   core::Logger logger;
   core::DriverRegistry registry;
   core::DeviceTable devices;  // last: devices shut down before the rest goes

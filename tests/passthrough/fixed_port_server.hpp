@@ -9,7 +9,7 @@
 #include <string_view>
 #include <thread>
 
-#include "core/clock.hpp"
+#include "core/server_clock.hpp"
 #include "core/device_table.hpp"
 #include "core/driver_registry.hpp"
 #include "core/logger.hpp"
@@ -29,7 +29,7 @@ class FixedPortServer {
   core::Device& device(std::string_view address);
 
  private:
-  core::WallClock clock_;
+  core::ServerClock clock_;
   core::Logger logger_{"robot"};
   core::DriverRegistry registry_;
   core::DeviceTable devices_;

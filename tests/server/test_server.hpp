@@ -45,7 +45,7 @@ class TestServer {
   void stop();
 
  private:
-  core::WallClock clock_;
+  core::ServerClock clock_;
   core::Logger logger_{"test-server"};
   mutable std::mutex log_mutex_;
   std::vector<std::string> log_;

@@ -41,7 +41,6 @@ struct AmclDriverTest : ::testing::Test {
     testing::write_cave_log(log_path, drive);
     ReadlogSettings settings;
     settings.log = log_path;
-    settings.clock = &log_clock;
     settings.timer = timer;
     builtin.registry.add(readlog_driver_spec(std::move(settings)));
     builtin.load(config);
@@ -70,7 +69,6 @@ struct AmclDriverTest : ::testing::Test {
   testing::ScratchDirectory scratch;
   std::filesystem::path log_path = scratch.file("cave.log");
   std::vector<testing::DriveStep> drive = testing::cave_drive();
-  core::ManualClock log_clock;
   std::shared_ptr<testing::ManualReplayTimer> timer = std::make_shared<testing::ManualReplayTimer>();
   testing::BuiltinDevices builtin;  // last: its devices stop before the timer and clock go
   core::Device* localize_device = nullptr;
@@ -96,7 +94,7 @@ void AmclDriverTest::expect_convergence(const std::string& config) {
   })) << localize().latest_data()->sequence << " " << localize().latest_data()->timestamp.seconds() << " pos "
       << builtin.device(protocol::kPositionCode).latest_data()->sequence << " laser "
       << builtin.device(protocol::kLaserCode).latest_data()->sequence << " waiting "
-      << (timer->waiting_for() ? timer->waiting_for()->count() : -1) << " clock " << log_clock.now().seconds();
+      << (timer->waiting_for() ? timer->waiting_for()->count() : -1) << " clock " << builtin.clock.now().seconds();
 
   const protocol::LocalizeData data = latest();
   EXPECT_EQ(localize().latest_data()->payload.size(), 14 + 88 * data.hypoth_count);

@@ -34,10 +34,10 @@ class ReplaySessions {
     const Key key{options.path.string(), options.speed, options.autorewind, options.start_offset};
     // duration and burst come from the settings: the same for every device.
     if (auto existing = sessions_[key].lock()) return existing;
-    // Only one reader may set the server's clock: the first one on the -r file.
-    core::ManualClock* clock = nullptr;
-    if (!clock_taken_ && settings_.clock != nullptr && settings_.log && options.path == *settings_.log) {
-      clock = settings_.clock;
+    // Only one reader keeps the server's time: the first one on the -r file.
+    std::shared_ptr<core::ManualClock> clock;
+    if (!clock_taken_ && settings_.log && options.path == *settings_.log) {
+      clock = std::make_shared<core::ManualClock>();
       clock_taken_ = true;
     }
     auto session = std::make_shared<ReplaySession>(options, clock, settings_.timer, logger);
@@ -114,7 +114,11 @@ core::DriverSpec readlog_driver_spec(ReadlogSettings settings) {
                                 "readlog: index " + std::to_string(index) + " is not 0-65535");
     }
     const protocol::DeviceAddress logged{context.key.address.interface, static_cast<std::uint16_t>(index)};
-    return std::make_unique<ReadlogDriver>(sessions->get(options, context.logger), logged);
+    auto session = sessions->get(options, context.logger);
+    // With -r every header time the server writes is log time
+    // (logfile-format.md §5).
+    if (auto log_clock = session->clock()) context.clock.claim(log_clock, core::to_string(context.key) + " (readlog)");
+    return std::make_unique<ReadlogDriver>(std::move(session), logged);
   };
   spec.summary = "replays the data of a Player text log (player-serve -r LOG)";
   spec.doc.manual_section = "7.36";

@@ -8,8 +8,9 @@
 // `filename` option; `speed` (default -f, else 1), `autorewind` (0/1) and
 // `start` (seconds into the log) shape the replay. Devices reading the same
 // file with the same options share one reader (replay_session.hpp); the
-// reader for the -r file also drives the server's clock. Every configuration
-// request is answered NACK. See README.md for the differences from 1.5.
+// devices of the reader for the -r file claim the server's clock
+// (core::ServerClock) with the log's time. Every configuration request is
+// answered NACK. See README.md for the differences from 1.5.
 
 #include <filesystem>
 #include <memory>
@@ -43,8 +44,6 @@ class ReadlogDriver final : public core::Driver {
 struct ReadlogSettings {
   std::optional<std::filesystem::path> log;  // -r
   double speed = 1.0;                        // -f
-  // Set to the log's time by the session reading `log` (the server's clock).
-  core::ManualClock* clock = nullptr;
   // Null: real time. Tests pass one they control.
   std::shared_ptr<ReplayTimer> timer;
   // Samples each device keeps for clients that fall behind (0: the latest

@@ -34,7 +34,6 @@ struct ReadlogTest : ::testing::Test {
     testing::write_position_log(log_path, samples);
     settings.log = log_path;
     settings.speed = speed;
-    settings.clock = &log_clock;
     settings.timer = timer;
     builtin.registry.add(readlog_driver_spec(std::move(settings)));
     builtin.load(config);
@@ -51,7 +50,6 @@ struct ReadlogTest : ::testing::Test {
 
   testing::ScratchDirectory scratch;
   std::filesystem::path log_path = scratch.file("run.log");
-  core::ManualClock log_clock;
   std::shared_ptr<testing::ManualReplayTimer> timer = std::make_shared<testing::ManualReplayTimer>();
   testing::BuiltinDevices builtin;  // last: its devices stop before the timer and clock go
 };
@@ -59,21 +57,21 @@ struct ReadlogTest : ::testing::Test {
 TEST_F(ReadlogTest, PublishesAtTheLoggedPaceWithTheLoggedTimestamps) {
   load("position:0 ( driver \"readlog\" )\nposition:1 ( driver \"readlog\" )\n");
   // Before anyone subscribes the clock already reads the log's first time.
-  EXPECT_EQ(log_clock.now(), (Timestamp{1000, 0}));
+  EXPECT_EQ(builtin.clock.now(), (Timestamp{1000, 0}));
   core::Device& device = position(0);
   ASSERT_TRUE(device.subscribe());
 
   ASSERT_TRUE(has_sequence(device, 1));
   EXPECT_EQ(device.latest_data()->payload, position_payload(100));
   EXPECT_EQ(device.latest_data()->timestamp, (Timestamp{999, 900000}));  // the logged data time
-  EXPECT_EQ(log_clock.now(), (Timestamp{1000, 0}));
+  EXPECT_EQ(builtin.clock.now(), (Timestamp{1000, 0}));
 
   // The position:1 line (0.25 s later) waits its turn; nothing else goes early.
   ASSERT_TRUE(waiting_for(250ms));
   EXPECT_EQ(device.latest_data()->sequence, 1u);
   timer->set(250ms);
   ASSERT_TRUE(waiting_for(500ms));
-  EXPECT_EQ(log_clock.now(), (Timestamp{1000, 250000}));
+  EXPECT_EQ(builtin.clock.now(), (Timestamp{1000, 250000}));
   EXPECT_EQ(device.latest_data()->sequence, 1u);          // not its index
   EXPECT_EQ(position(1).latest_data()->sequence, 0u);     // not subscribed
 
@@ -85,12 +83,12 @@ TEST_F(ReadlogTest, PublishesAtTheLoggedPaceWithTheLoggedTimestamps) {
   timer->set(1000ms);
   ASSERT_TRUE(has_sequence(device, 3));
   EXPECT_EQ(device.latest_data()->payload, position_payload(300));
-  EXPECT_EQ(log_clock.now(), (Timestamp{1001, 0}));
+  EXPECT_EQ(builtin.clock.now(), (Timestamp{1001, 0}));
 
   // After the last line the server clock keeps running from the log's end.
   ASSERT_TRUE(waiting_for(1100ms));
   timer->set(1100ms);
-  ASSERT_TRUE(eventually([&] { return log_clock.now() == Timestamp{1001, 100000}; }));
+  ASSERT_TRUE(eventually([&] { return builtin.clock.now() == Timestamp{1001, 100000}; }));
   EXPECT_EQ(device.latest_data()->sequence, 3u);  // no rewind
   device.unsubscribe();
 }
@@ -110,7 +108,7 @@ TEST_F(ReadlogTest, SpeedDividesTheWaits) {
   ASSERT_TRUE(has_sequence(position(0), 3));
   ASSERT_TRUE(waiting_for(600ms));
   timer->set(600ms);
-  ASSERT_TRUE(eventually([&] { return log_clock.now() == Timestamp{1001, 200000}; }));
+  ASSERT_TRUE(eventually([&] { return builtin.clock.now() == Timestamp{1001, 200000}; }));
 }
 
 TEST_F(ReadlogTest, SpeedOptionOverridesTheCommandLine) {
@@ -125,7 +123,7 @@ TEST_F(ReadlogTest, StartOffsetSkipsTheBeginning) {
   ASSERT_TRUE(position(0).subscribe());
   ASSERT_TRUE(has_sequence(position(0), 1));
   EXPECT_EQ(position(0).latest_data()->payload, position_payload(200));  // the line at 0.5 s
-  EXPECT_EQ(log_clock.now(), (Timestamp{1000, 500000}));
+  EXPECT_EQ(builtin.clock.now(), (Timestamp{1000, 500000}));
   ASSERT_TRUE(waiting_for(500ms));  // the next line, 0.5 s of log later
 }
 
@@ -141,7 +139,7 @@ TEST_F(ReadlogTest, AutorewindStartsAgainFromTheTop) {
   ASSERT_TRUE(has_sequence(device, 3));
   EXPECT_EQ(device.latest_data()->payload, position_payload(100));
   EXPECT_EQ(device.latest_data()->timestamp, (Timestamp{999, 900000}));
-  EXPECT_EQ(log_clock.now(), (Timestamp{1000, 0}));
+  EXPECT_EQ(builtin.clock.now(), (Timestamp{1000, 0}));
   ASSERT_TRUE(waiting_for(1000ms));
 }
 
@@ -180,7 +178,18 @@ TEST_F(ReadlogTest, FilenameOptionWorksWithoutMinusR) {
   ASSERT_TRUE(position(0).subscribe());  // real time: the first line goes at once
   ASSERT_TRUE(has_sequence(position(0), 1));
   EXPECT_EQ(position(0).latest_data()->payload, position_payload(100));
+  // Only the -r log keeps the server's time.
+  EXPECT_FALSE(builtin.clock.claimed());
   position(0).unsubscribe();
+}
+
+TEST_F(ReadlogTest, TheDevicesOfTheMinusRLogClaimTheServerClock) {
+  load("position:0 ( driver \"readlog\" )\nposition:1 ( driver \"readlog\" )\n");
+  EXPECT_TRUE(builtin.clock.claimed());
+  EXPECT_EQ(builtin.clock.claimant(), "position:0@6665 (readlog)");
+  // Devices publish with the server clock when they give no time: log time.
+  position(1).publish({1});
+  EXPECT_EQ(position(1).latest_data()->timestamp, (Timestamp{1000, 0}));
 }
 
 std::string load_error(testing::BuiltinDevices& builtin, const std::string& config) {

@@ -58,10 +58,10 @@ protocol::Timestamp first_replay_time(const std::filesystem::path& path) {
   return logged_time(*first);
 }
 
-ReplaySession::ReplaySession(ReplayOptions options, core::ManualClock* clock,
+ReplaySession::ReplaySession(ReplayOptions options, std::shared_ptr<core::ManualClock> clock,
                              std::shared_ptr<ReplayTimer> timer, core::Logger& logger)
     : options_(std::move(options)),
-      clock_(clock),
+      clock_(std::move(clock)),
       timer_(timer ? std::move(timer) : std::make_shared<SteadyReplayTimer>()),
       logger_(logger) {
   first_log_time_ = first_replay_time(options_.path);

@@ -7,9 +7,10 @@
 // in file order): the line logged t seconds after the first one served goes
 // out t / speed seconds after replay started. Data lines are published with
 // their logged data time (token 5) as the timestamp. When a clock is given it
-// is set to each line's logged time as the line goes out, so the server's own
-// header times follow the log; after the end of the file (without autorewind)
-// it keeps running from the last logged time at `speed`.
+// is set to each line's logged time as the line goes out; the readlog devices
+// of the -r log make it the server's clock (core::ServerClock), so the
+// server's own header times follow the log. After the end of the file
+// (without autorewind) it keeps running from the last logged time at `speed`.
 //
 // The thread starts at the first attach() and, as in 1.5, does not pause when
 // devices detach: the log plays on like a live robot.
@@ -66,7 +67,7 @@ class ReplaySession {
   // missing, unreadable or empty log is refused before serving starts (throws
   // what first_replay_time throws). `clock` may be null; `timer`
   // null means real time.
-  ReplaySession(ReplayOptions options, core::ManualClock* clock,
+  ReplaySession(ReplayOptions options, std::shared_ptr<core::ManualClock> clock,
                 std::shared_ptr<ReplayTimer> timer, core::Logger& logger);
   ~ReplaySession();
   ReplaySession(const ReplaySession&) = delete;
@@ -78,6 +79,8 @@ class ReplaySession {
   void detach(core::Device& device);
 
   [[nodiscard]] const ReplayOptions& options() const { return options_; }
+  // The clock this session sets to log time; null when it sets none.
+  [[nodiscard]] std::shared_ptr<const core::Clock> clock() const { return clock_; }
   [[nodiscard]] protocol::Timestamp first_log_time() const { return first_log_time_; }
   // Lines that could not be read (skipped with a warning).
   [[nodiscard]] std::uint64_t malformed_lines() const { return malformed_lines_; }
@@ -97,7 +100,7 @@ class ReplaySession {
   bool wait_for_any_reader(const std::stop_token& stop);
 
   const ReplayOptions options_;
-  core::ManualClock* const clock_;
+  const std::shared_ptr<core::ManualClock> clock_;
   const std::shared_ptr<ReplayTimer> timer_;
   core::Logger& logger_;
   std::shared_ptr<const log::LogClock> log_clock_;  // replaces the log's unusable times
