@@ -6,6 +6,7 @@
 
 #include "map/map_file.hpp"
 #include "sim/worldfile/worldfile_error.hpp"
+#include "sim/worldfile/worldfile_limits.hpp"
 #include "text/printable.hpp"
 
 namespace playerkit::sim::worldfile {
@@ -180,7 +181,12 @@ grid::OccupancyGrid build_map(const MapPlan& plan, std::vector<std::string>& war
     low -= Eigen::Vector2d::Constant(margin);
     high += Eigen::Vector2d::Constant(margin);
   }
-  if (!low.allFinite() || !high.allFinite()) throw WorldFileError(plan.where, "the world's extent is not finite");
+  if (!low.allFinite() || !high.allFinite() || (high - low).maxCoeff() > kMaxWorldExtent) {
+    throw WorldFileError(plan.where, "the world spans more than " + std::to_string(static_cast<long long>(kMaxWorldExtent)) +
+                                         " m (from (" + std::to_string(low.x()) + ", " + std::to_string(low.y()) +
+                                         ") to (" + std::to_string(high.x()) + ", " + std::to_string(high.y()) +
+                                         ")): a size or pose is far too large");
+  }
 
   double resolution = plan.resolution;
   const auto cells_along = [&](double length, double cell) { return std::max(1.0, std::ceil(length / cell - 1e-6)); };

@@ -8,6 +8,7 @@
 #include "protocol/interfaces.hpp"
 #include "sim/worldfile/world_loader_context.hpp"
 #include "sim/worldfile/worldfile_error.hpp"
+#include "sim/worldfile/worldfile_limits.hpp"
 #include "text/printable.hpp"
 
 namespace playerkit::sim::worldfile {
@@ -142,6 +143,9 @@ class Stage4Reader {
       placement.where = bitmap->where;
       placement.walls = WallPixels::dark;
       placement.stretch_to = size;
+      if (!(size.x() > 0.0 && size.y() > 0.0)) {
+        throw WorldFileError(bitmap->where, "a model with a bitmap needs a size above 0 in x and y");
+      }
       placement.pose = body_pose;
       auto walls = walls_of_bitmap(placement, context_.map.finest_pixel, context_.warnings);
       context_.map.walls.insert(context_.map.walls.end(), walls.begin(), walls.end());
@@ -231,6 +235,12 @@ class Stage4Reader {
         blobfinder.channels.push_back(color_named(colors->values[static_cast<std::size_t>(i)], context_));
       }
       if (const auto image = properties.tuple("image", {kPlain, kPlain}, "[w h]")) {
+        if (!((*image)[0] >= 1 && (*image)[0] <= kMaxSensorSamples && (*image)[1] >= 1 &&
+              (*image)[1] <= kMaxSensorSamples)) {
+          throw WorldFileError(properties.take("image")->where,
+                               "a blobfinder's image must be between 1 and " + std::to_string(kMaxSensorSamples) +
+                                   " pixels each way");
+        }
         blobfinder.image_width = static_cast<int>((*image)[0]);
         blobfinder.image_height = static_cast<int>((*image)[1]);
       }
@@ -301,8 +311,11 @@ class Stage4Reader {
     return position;
   }
 
-  void check_samples(const Entity& entity, int samples) {
-    if (samples < 1) throw WorldFileError(entity.where, "a laser needs at least 1 sample");
+  static void check_samples(const Entity& entity, int samples) {
+    if (samples < 1 || samples > kMaxSensorSamples) {
+      throw WorldFileError(entity.where, "samples must be between 1 and " + std::to_string(kMaxSensorSamples) +
+                                             ", not " + std::to_string(samples));
+    }
   }
 
   // 4.x: the sensors decide; 3.x: a ring of scount transducers.

@@ -189,6 +189,18 @@ TEST(WorldLoaderErrors, ValuesOfTheWrongShape) {
             "t.world:1:25: the number 100000000000000");
 }
 
+TEST(WorldLoaderErrors, HostileSizesAreRefused) {
+  EXPECT_EQ(load_error("position ( pose [0 0 0 0] ranger ( sensor ( samples 1000000000 ) ) )"),
+            "t.world:1:36: samples must be between 1 and 100000, not 1000000000");
+  EXPECT_EQ(load_error("position ( pose [0 0 0 0] blobfinder ( image [80 1000000000] ) )"),
+            "t.world:1:40: a blobfinder's image must be between 1 and 100000 pixels each way");
+  EXPECT_NE(load_error("model ( size [" + std::string(300, '9') + " 1 1] pose [0 0 0 0] boundary 1 )")
+                .find("t.world: the world spans more than 1000000 m"),
+            std::string::npos);
+  EXPECT_EQ(load_error("model ( pose [0 0 0 0] size [0 16 1] bitmap \"stage-cave.png\" )"),
+            "t.world:1:38: a model with a bitmap needs a size above 0 in x and y");
+}
+
 TEST(WorldLoaderWarnings, UnknownPropertiesAreNamedAndGuiOnesAreNot) {
   const WorldDescription world = describe_text(
       "gui ( size [600 600] scale 0.03 )\n"

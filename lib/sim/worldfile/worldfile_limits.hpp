@@ -21,4 +21,13 @@ inline constexpr int kMaxEntityDepth = 32;
 // that of the largest plain file. Real worlds have a few thousand.
 inline constexpr std::size_t kMaxWorldItems = 1'000'000;
 
+// Rays of one laser scan or blobfinder image row. Each costs memory and a
+// ray cast per update; the densest real worlds have 1081 (a Hokuyo in
+// stage_ros's willow-erratic.world).
+inline constexpr int kMaxSensorSamples = 100'000;
+// The extent of a world, in metres along x and along y: Stage's benchmark
+// hospital is 140 m across. Beyond this a typo (a size of 1e30) would only
+// make a map of absurd cells.
+inline constexpr double kMaxWorldExtent = 1.0e6;
+
 }  // namespace playerkit::sim::worldfile
