@@ -1,5 +1,7 @@
 #include "sim/world/body_index.hpp"
 
+#include <type_traits>
+
 namespace playerkit::sim {
 
 namespace {
@@ -16,11 +18,31 @@ bool grid_can_hold(const PlacedBody& shape) {
   return reach < kFarthestGridded;  // false for NaN too
 }
 
-void erase_listed(std::vector<ModelId>& ids, ModelId id) {
-  const auto found = std::find(ids.begin(), ids.end(), id);
-  if (found == ids.end()) return;
-  *found = ids.back();
-  ids.pop_back();
+template <typename Listed>
+void erase_listed(std::vector<Listed>& listed, ModelId id) {
+  const auto found = std::find_if(listed.begin(), listed.end(), [id](const Listed& item) {
+    if constexpr (std::is_same_v<Listed, ModelId>) {
+      return item == id;
+    } else {
+      return item.id == id;
+    }
+  });
+  if (found == listed.end()) return;
+  *found = listed.back();
+  listed.pop_back();
+}
+
+CellSlot slot_of(ModelId id, const IndexedBody& body) {
+  // Rounded up, so that the float never makes a body look smaller.
+  const auto reach = static_cast<float>(body.shape.bounding_radius);
+  return {.id = id,
+          .root = body.root,
+          .x = body.shape.centre.x(),
+          .y = body.shape.centre.y(),
+          .reach = static_cast<double>(reach) < body.shape.bounding_radius
+                       ? std::nextafter(reach, std::numeric_limits<float>::infinity())
+                       : reach,
+          .ranger_visible = body.ranger_visible};
 }
 
 }  // namespace
@@ -51,6 +73,7 @@ void BodyIndex::put(ModelId id, const IndexedBody& body) {
       if (range.col0 == entry.cells.col0 && range.col1 == entry.cells.col1 && range.row0 == entry.cells.row0 &&
           range.row1 == entry.cells.row1 && on_grid(range)) {
         entry.body = body;
+        if (body.solid) refresh_slots(id, entry);
         return;
       }
     }
@@ -81,8 +104,27 @@ void BodyIndex::list(ModelId id, Entry& entry) {
     oversized_.push_back(id);
     return;
   }
+  const CellSlot slot = slot_of(id, entry.body);
   for (int row = entry.cells.row0; row <= entry.cells.row1; ++row) {
-    for (int col = entry.cells.col0; col <= entry.cells.col1; ++col) bucket(entry, cell_index(col, row)).push_back(id);
+    for (int col = entry.cells.col0; col <= entry.cells.col1; ++col) {
+      const std::size_t cell = cell_index(col, row);
+      if (entry.body.solid) {
+        solid_cells_[cell].push_back(slot);
+      } else {
+        point_cells_[cell].push_back(id);
+      }
+    }
+  }
+}
+
+void BodyIndex::refresh_slots(ModelId id, const Entry& entry) {
+  const CellSlot slot = slot_of(id, entry.body);
+  for (int row = entry.cells.row0; row <= entry.cells.row1; ++row) {
+    for (int col = entry.cells.col0; col <= entry.cells.col1; ++col) {
+      for (CellSlot& listed : solid_cells_[cell_index(col, row)]) {
+        if (listed.id == id) listed = slot;
+      }
+    }
   }
 }
 
@@ -94,7 +136,14 @@ void BodyIndex::unlist(ModelId id, Entry& entry) {
     return;
   }
   for (int row = entry.cells.row0; row <= entry.cells.row1; ++row) {
-    for (int col = entry.cells.col0; col <= entry.cells.col1; ++col) erase_listed(bucket(entry, cell_index(col, row)), id);
+    for (int col = entry.cells.col0; col <= entry.cells.col1; ++col) {
+      const std::size_t cell = cell_index(col, row);
+      if (entry.body.solid) {
+        erase_listed(solid_cells_[cell], id);
+      } else {
+        erase_listed(point_cells_[cell], id);
+      }
+    }
   }
 }
 

@@ -31,6 +31,16 @@ struct IndexedBody {
   bool obstacle = false;
 };
 
+// A solid body as its cells list it: enough to reject most rays without
+// looking further (the bounding circle, the tree, ranger visibility).
+struct CellSlot {
+  ModelId id = kNoModel;
+  ModelId root = kNoModel;
+  double x = 0.0, y = 0.0;  // the body's centre
+  float reach = 0.0f;       // its bounding radius, rounded up
+  bool ranger_visible = false;
+};
+
 class BodyIndex {
  public:
   // Starts the grid over this rectangle (the map); it grows as models need.
@@ -49,8 +59,9 @@ class BodyIndex {
   [[nodiscard]] std::span<const ModelId> oversized() const { return oversized_; }
 
   // Visits the cells a ray crosses within `length` (unit `direction`),
-  // nearest first, with the solid bodies listed there and the distance at
-  // which the ray leaves the cell; stops when `visit` returns false.
+  // nearest first, with the solid bodies listed there (a span of CellSlot)
+  // and the distance at which the ray leaves the cell; stops when `visit`
+  // returns false.
   template <typename Visit>
   void along_ray(const Eigen::Vector2d& origin, const Eigen::Vector2d& direction, double length, Visit&& visit) const;
 
@@ -82,12 +93,10 @@ class BodyIndex {
   void unlist(ModelId id, Entry& entry);
   void grow_to(const IndexedBody& body);
   void rebuild(const Eigen::Vector2d& low, const Eigen::Vector2d& high);
-  std::vector<ModelId>& bucket(const Entry& entry, std::size_t cell) {
-    return entry.body.solid ? solid_cells_[cell] : point_cells_[cell];
-  }
+  void refresh_slots(ModelId id, const Entry& entry);
 
   std::vector<Entry> entries_;
-  std::vector<std::vector<ModelId>> solid_cells_;  // bodies: rays, collisions
+  std::vector<std::vector<CellSlot>> solid_cells_;  // bodies: rays, collisions
   std::vector<std::vector<ModelId>> point_cells_;  // bodiless models: found by near() only
   std::vector<ModelId> oversized_;
   std::size_t solid_count_ = 0;
@@ -145,8 +154,8 @@ void BodyIndex::along_ray(const Eigen::Vector2d& origin, const Eigen::Vector2d& 
   for (;;) {
     const int axis = next_border[0] <= next_border[1] ? 0 : 1;
     const double exit = std::min(next_border[axis], leave);
-    const std::vector<ModelId>& listed_here = solid_cells_[cell_index(cell[0], cell[1])];
-    if (!visit(std::span<const ModelId>(listed_here), exit)) return;
+    const std::vector<CellSlot>& listed_here = solid_cells_[cell_index(cell[0], cell[1])];
+    if (!visit(std::span<const CellSlot>(listed_here), exit)) return;
     if (exit >= leave) return;
     cell[axis] += step[axis];
     if (cell[axis] < 0 || cell[axis] >= limits[axis]) return;
@@ -168,7 +177,7 @@ void BodyIndex::near(const Eigen::Vector2d& centre, double radius, Visit&& visit
   const int row1 = std::min(clamped(centre.y() + radius, low_.y(), rows_), rows_ - 1);
   for (int row = row0; row <= row1; ++row) {
     for (int col = col0; col <= col1; ++col) {
-      for (const ModelId id : solid_cells_[cell_index(col, row)]) visit(id);
+      for (const CellSlot& slot : solid_cells_[cell_index(col, row)]) visit(slot.id);
       for (const ModelId id : point_cells_[cell_index(col, row)]) visit(id);
     }
   }

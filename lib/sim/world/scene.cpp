@@ -75,17 +75,27 @@ RayHit Scene::cast(const Eigen::Vector2d& origin, double angle, double max_range
   const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
   const bool default_stops = !stops;
   const auto try_body = [&](ModelId id) {
-    const IndexedBody& body = index_.body(id);
-    if (!body.solid || body.root == ignore_root || (default_stops && !body.ranger_visible)) return;
-    const double entry = ray_entry(body.shape, origin, direction);
     // Walls win ties; the filter runs only for a body that would be nearer.
+    const double entry = ray_entry(index_.body(id).shape, origin, direction);
     if (!(entry < hit.range)) return;
     if (!default_stops && !stops(models_[static_cast<std::size_t>(id)])) return;
     hit = {.range = entry, .model = id, .wall = false};
   };
-  for (const ModelId id : index_.oversized()) try_body(id);
-  index_.along_ray(origin, direction, hit.range, [&](std::span<const ModelId> listed, double leaves_cell) {
-    for (const ModelId id : listed) try_body(id);
+  for (const ModelId id : index_.oversized()) {
+    const IndexedBody& body = index_.body(id);
+    if (body.solid && body.root != ignore_root && (!default_stops || body.ranger_visible)) try_body(id);
+  }
+  index_.along_ray(origin, direction, hit.range, [&](std::span<const CellSlot> listed, double leaves_cell) {
+    for (const CellSlot& slot : listed) {
+      if (slot.root == ignore_root || (default_stops && !slot.ranger_visible)) continue;
+      // Most bodies are off the ray, behind it or beyond what it already
+      // met: their bounding circle says so without the exact test.
+      const double to_x = slot.x - origin.x(), to_y = slot.y - origin.y();
+      const double along = to_x * direction.x() + to_y * direction.y();
+      if (along + slot.reach < 0.0 || along - slot.reach >= hit.range) continue;
+      if (std::abs(to_x * direction.y() - to_y * direction.x()) > slot.reach) continue;
+      try_body(slot.id);
+    }
     // Cells further on lie beyond leaves_cell: nothing there can be nearer.
     return hit.range > leaves_cell;
   });

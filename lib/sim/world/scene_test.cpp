@@ -273,6 +273,20 @@ TEST(Scene, ALongRowOfModelsIsMetInOrderAndFollowedAsItMoves) {
   EXPECT_NEAR(scene.cast({199.2, 0.0}, std::numbers::pi, 300.0, kNoModel).range, 199.2 - 49.55, 1e-9);
 }
 
+TEST(Scene, SmallMovesWithinOneGridCellAreFollowed) {
+  // The broad phase's cells are 2 m from the map's corner: [1, 3] in x and y here.
+  Scene scene(grid::OccupancyGrid(100, 100, 0.1, {-5.0, -5.0}, grid::CellState::free));
+  scene.add(box_at(0, 1.5, 1.5, 0.2));
+  EXPECT_EQ(scene.cast({1.85, 0.0}, std::numbers::pi / 2, 5.0, kNoModel).model, kNoModel);
+  for (int step = 1; step <= 30; ++step) {
+    const double x = 1.5 + 0.01 * step;
+    scene.update(0, {x, 1.5, 0.0});
+    EXPECT_NEAR(scene.cast({0.0, 1.5}, 0.0, 5.0, kNoModel).range, x - 0.1, 1e-12);
+  }
+  // Now in the path of a ray it was nowhere near at first.
+  EXPECT_NEAR(scene.cast({1.85, 0.0}, std::numbers::pi / 2, 5.0, kNoModel).range, 1.4, 1e-12);
+}
+
 TEST(Scene, CarriedModelsJoinTheirCarriersTree) {
   Scene scene;
   scene.add(box_at(0, 0.0, 0.0, 0.4));
