@@ -87,6 +87,7 @@ class World {
 
   // ---- position ----
   void command_velocity(ModelId position, const Eigen::Vector3d& velocity);  // x, y (m/s), yaw (rad/s)
+  // (a car-drive model reads x as its speed and yaw as its steering angle, rad)
   // Drives towards a goal pose in the localization frame (Stage's go-to:
   // 0.4 m/s and 1 rad/s caps, 2 cm tolerance), until a velocity command.
   void command_pose(ModelId position, const geometry::Pose2& goal);
