@@ -40,6 +40,10 @@ TEST(BuiltinDrivers, RegistersEveryDriverSortedByName) {
         "p2os_position", "p2os_power", "p2os_sonar", "p2os_sound"}},
       {"passthrough", {"passthrough"}},
       {"sick", {"sicklms200", "sickpls"}},
+      {"sim",
+       {"blobfinder", "fiducial", "fiducialfinder", "gripper", "gz_fiducial", "gz_gripper", "gz_laser", "gz_position",
+        "gz_power", "gz_ptz", "gz_sonar", "gz_sonars", "gz_truth", "laser", "lbd", "omniposition", "position", "power",
+        "ptz", "ranger", "simulation", "sonar", "truth", "vision"}},
   };
   std::vector<std::string> expected;
   std::stringstream built(PLAYERKIT_BUILT_DRIVER_FAMILIES);

@@ -1,0 +1,168 @@
+#include "drivers/sim/simulation_host.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+namespace playerkit::drivers::sim {
+
+namespace {
+
+void check_setting(double value, const char* what) {
+  if (!std::isfinite(value) || value < 0.0) {
+    throw std::invalid_argument(std::string(what) + " must be 0 or more, not " + std::to_string(value));
+  }
+}
+
+// Compared against the world's time, a sum of whole steps: a limit written as
+// 2.0 is reached by step 20 of 0.1 s even though 20 × 0.1 is 2.0000000000000004.
+constexpr double kTimeTolerance = 1e-9;
+
+}  // namespace
+
+protocol::Timestamp simulation_timestamp(double seconds) {
+  if (!(seconds > 0.0)) return {};
+  return core::from_microseconds(static_cast<std::uint64_t>(std::llround(seconds * 1e6)));
+}
+
+SimulationHost::SimulationHost(playerkit::sim::World world, std::string name, SimulationSettings settings,
+                               core::Logger& logger)
+    : world_(std::move(world)),
+      name_(std::move(name)),
+      settings_(settings),
+      logger_(logger),
+      step_seconds_(world_.settings().step),
+      clock_(std::make_shared<core::ManualClock>()) {
+  check_setting(settings_.speedup, "the speedup");
+  if (settings_.run_limit) check_setting(*settings_.run_limit, "the run limit");
+  time_.store(world_.time());
+  clock_->set(simulation_timestamp(world_.time()));
+  paused_ = settings_.start_paused;
+  limit_reached_ = settings_.run_limit && world_.time() + kTimeTolerance >= *settings_.run_limit;
+}
+
+SimulationHost::~SimulationHost() { stop(); }
+
+void SimulationHost::start() {
+  std::lock_guard lock(control_mutex_);
+  if (started_) return;
+  started_ = true;
+  thread_ = std::jthread([this](const std::stop_token& stop) { run(stop); });
+}
+
+void SimulationHost::stop() {
+  thread_.request_stop();
+  if (thread_.joinable() && thread_.get_id() != std::this_thread::get_id()) thread_.join();
+}
+
+double SimulationHost::activate(playerkit::sim::ModelId model) {
+  std::lock_guard lock(world_mutex_);
+  if (active_[model]++ == 0) world_.set_active(model, true);
+  return world_.time();
+}
+
+void SimulationHost::deactivate(playerkit::sim::ModelId model) {
+  std::lock_guard lock(world_mutex_);
+  auto found = active_.find(model);
+  if (found == active_.end()) return;
+  if (--found->second == 0) {
+    active_.erase(found);
+    world_.set_active(model, false);
+  }
+}
+
+void SimulationHost::pause() {
+  std::lock_guard lock(control_mutex_);
+  paused_ = true;
+  wakeup_.notify_all();
+}
+
+void SimulationHost::resume() {
+  std::lock_guard lock(control_mutex_);
+  paused_ = false;
+  wakeup_.notify_all();
+}
+
+void SimulationHost::step() {
+  {
+    std::lock_guard lock(control_mutex_);
+    paused_ = true;
+    wakeup_.notify_all();
+  }
+  // The stepping thread may be inside a step: the world lock orders the two.
+  if (step_world()) {
+    std::lock_guard lock(control_mutex_);
+    limit_reached_ = true;
+  }
+}
+
+bool SimulationHost::paused() const {
+  std::lock_guard lock(control_mutex_);
+  return paused_;
+}
+
+bool SimulationHost::run_limit_reached() const {
+  std::lock_guard lock(control_mutex_);
+  return limit_reached_;
+}
+
+double SimulationHost::time() const { return time_.load(); }
+
+bool SimulationHost::may_run() const { return !paused_ && !limit_reached_; }
+
+bool SimulationHost::step_world() {
+  std::lock_guard lock(world_mutex_);
+  world_.step();
+  const double now = world_.time();
+  time_.store(now);
+  clock_->set(simulation_timestamp(now));
+  return settings_.run_limit && now + kTimeTolerance >= *settings_.run_limit;
+}
+
+void SimulationHost::run(const std::stop_token& stop) {
+  using Clock = std::chrono::steady_clock;
+  const auto step_real = std::chrono::duration_cast<Clock::duration>(
+      std::chrono::duration<double>(settings_.speedup > 0.0 ? step_seconds_ / settings_.speedup : 0.0));
+  std::unique_lock lock(control_mutex_);
+  // Pacing: step `done + 1` is due at origin + (done + 1) · step_real.
+  Clock::time_point origin = Clock::now();
+  std::uint64_t done = 0;
+  bool was_running = false;
+  while (!stop.stop_requested()) {
+    if (!may_run()) {
+      was_running = false;
+      wakeup_.wait(lock, stop, [this] { return may_run(); });
+      continue;
+    }
+    if (!was_running) {  // (re)started: pace from now
+      origin = Clock::now();
+      done = 0;
+      was_running = true;
+    }
+    if (settings_.speedup > 0.0) {
+      const auto due = origin + step_real * static_cast<Clock::rep>(done + 1);
+      const auto now = Clock::now();
+      if (now > due + kMaxLag) {
+        late_restarts_.fetch_add(1);
+        origin = now - step_real;
+        done = 0;
+      } else if (now < due) {
+        // Woken early by pause() or stop(): look again.
+        if (wakeup_.wait_until(lock, stop, due, [this] { return !may_run(); })) continue;
+        if (stop.stop_requested()) break;
+      }
+    }
+    lock.unlock();
+    const bool limit = step_world();
+    if (settings_.speedup == 0.0) std::this_thread::yield();  // let the event loop at the world
+    lock.lock();
+    ++done;
+    if (limit && !limit_reached_) {
+      limit_reached_ = true;
+      logger_.info(name_ + ": the simulation stops at " + std::to_string(time_.load()) +
+                   " s, its run limit; devices keep serving that moment");
+    }
+  }
+}
+
+}  // namespace playerkit::drivers::sim

@@ -1,0 +1,126 @@
+#pragma once
+// One simulated world served as devices: the sim::World, the thread that
+// steps it, and the simulation clock. Every simulated device of a world finds
+// the same host in the device table's core::ConnectionPool, keyed by the
+// world, and holds a SharedConnection::Use while it is set up.
+//
+// The world runs from start() (the devices' prepare(), before the server
+// accepts clients) whether or not anyone is subscribed, as Stage did: its
+// clock is the server's clock (core::ServerClock, claimed by every simulated
+// device), starting at 0 when the world was loaded.
+//
+// Pacing: step k is due at origin + k·step/speedup of steady-clock time, an
+// absolute deadline, so sleeping late once does not slow the simulation
+// down; speedup 0 steps as fast as it can. When the thread falls more than
+// kMaxLag behind (a loaded machine, a huge world), the origin moves up to now
+// instead of catching up in a burst (counted: late_restarts()). pause(),
+// step() and a run limit (simulation seconds, after which stepping stops as
+// if paused) control it; a paused world publishes nothing new.
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <stop_token>
+#include <string>
+#include <thread>
+
+#include "core/clock.hpp"
+#include "core/logger.hpp"
+#include "core/shared_connection.hpp"
+#include "sim/world/world.hpp"
+
+namespace playerkit::drivers::sim {
+
+struct SimulationSettings {
+  double speedup = 1.0;             // × real time; 0: as fast as possible
+  std::optional<double> run_limit;  // simulation seconds; stepping stops there
+  bool start_paused = false;
+};
+
+// Simulation seconds as a header time (whole microseconds).
+[[nodiscard]] protocol::Timestamp simulation_timestamp(double seconds);
+
+class SimulationHost final : public core::SharedConnection {
+ public:
+  // Behind by more than this much real time, pacing starts over from now.
+  static constexpr std::chrono::milliseconds kMaxLag{500};
+
+  // `name` names the world in log lines (its file). Throws
+  // std::invalid_argument for a negative or non-finite speedup or run limit.
+  SimulationHost(playerkit::sim::World world, std::string name, SimulationSettings settings, core::Logger& logger);
+  ~SimulationHost() override;
+
+  // Starts the stepping thread; later calls do nothing.
+  void start();
+  // Stops it (the world keeps its state). Also done by the destructor.
+  void stop();
+
+  // `f(world)` with the world locked: every read and change of the world
+  // goes through here (from the event loop, requests, tests).
+  template <class F>
+  decltype(auto) with_world(F&& f) {
+    std::lock_guard lock(world_mutex_);
+    return f(world_);
+  }
+
+  // Subscriptions, counted per model: the world sees the first and the last
+  // (sim::World::set_active), so two devices on one model do not stop each
+  // other. activate() returns the simulation time it happened at.
+  double activate(playerkit::sim::ModelId model);
+  void deactivate(playerkit::sim::ModelId model);
+
+  void pause();
+  void resume();
+  // One step now, then paused (also past the run limit).
+  void step();
+  [[nodiscard]] bool paused() const;
+  [[nodiscard]] bool run_limit_reached() const;
+
+  // Simulation seconds (updated after every step).
+  [[nodiscard]] double time() const;
+  // The simulation clock, for core::ServerClock::claim.
+  [[nodiscard]] std::shared_ptr<const core::Clock> clock() const { return clock_; }
+  [[nodiscard]] const std::string& name() const { return name_; }
+  [[nodiscard]] const SimulationSettings& settings() const { return settings_; }
+  // Times pacing fell more than kMaxLag behind and started over.
+  [[nodiscard]] std::uint64_t late_restarts() const { return late_restarts_.load(); }
+
+ protected:
+  // The world runs from start() on, subscribed or not: the first device set
+  // up starts it when nobody called start() (tests, tools without prepare).
+  void open() override { start(); }
+  void close() noexcept override {}
+
+ private:
+  void run(const std::stop_token& stop);
+  // One world step with the world locked; the clock follows. True when the
+  // run limit is reached by it.
+  bool step_world();
+  [[nodiscard]] bool may_run() const;  // control_mutex_ held
+
+  playerkit::sim::World world_;
+  const std::string name_;
+  const SimulationSettings settings_;
+  core::Logger& logger_;
+  const double step_seconds_;
+  std::shared_ptr<core::ManualClock> clock_;
+  std::atomic<double> time_{0.0};
+  std::atomic<std::uint64_t> late_restarts_{0};
+
+  std::mutex world_mutex_;  // the world and active_
+  std::map<playerkit::sim::ModelId, int> active_;
+
+  mutable std::mutex control_mutex_;  // everything below
+  std::condition_variable_any wakeup_;
+  bool paused_ = false;
+  bool limit_reached_ = false;
+  bool started_ = false;
+  std::jthread thread_;  // last: stops before the rest goes
+};
+
+}  // namespace playerkit::drivers::sim
