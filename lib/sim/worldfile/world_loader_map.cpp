@@ -1,8 +1,10 @@
 #include "sim/worldfile/world_loader_map.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "map/map_file.hpp"
 #include "sim/worldfile/worldfile_error.hpp"
@@ -58,6 +60,33 @@ bool wall_overlaps_cell(const std::array<Eigen::Vector2d, 4>& corners, const Eig
   return true;
 }
 
+bool turned_by_right_angles(double yaw) {
+  const double turn = std::fmod(std::abs(yaw), std::numbers::pi / 2.0);
+  return turn < 1e-12 || std::numbers::pi / 2.0 - turn < 1e-12;
+}
+
+// The bitmap whose pixels become the map's cells: the finest, when it is
+// coarser than `resolution` asks and every bitmap is axis-aligned (a turned
+// one keeps the cell `resolution`, which then follows its edges more
+// closely). Stage 1.3's grid starts at (0, 0), so there the pixels must
+// line up with it.
+const PixelLattice* cell_lattice(const MapPlan& plan) {
+  if (plan.bitmaps.empty()) return nullptr;
+  const auto finest = std::min_element(plan.bitmaps.begin(), plan.bitmaps.end(),
+                                       [](const PixelLattice& a, const PixelLattice& b) { return a.pixel < b.pixel; });
+  if (!(finest->pixel > plan.resolution * (1.0 + 1e-9))) return nullptr;
+  if (!std::all_of(plan.bitmaps.begin(), plan.bitmaps.end(), [](const PixelLattice& bitmap) { return bitmap.axis_aligned; })) {
+    return nullptr;
+  }
+  if (plan.positive_quadrant) {
+    for (int axis = 0; axis < 2; ++axis) {
+      const double cells = finest->corner[axis] / finest->pixel;
+      if (std::abs(cells - std::round(cells)) > 1e-6) return nullptr;
+    }
+  }
+  return &*finest;
+}
+
 }  // namespace
 
 void mark_wall(grid::OccupancyGrid& grid, const WallRectangle& wall) {
@@ -72,8 +101,7 @@ void mark_wall(grid::OccupancyGrid& grid, const WallRectangle& wall) {
   const auto [first_row, last_row] = overlapped_cells(low.y(), high.y(), grid.origin().y(), resolution);
   const long long col_begin = std::max(first_col, 0LL), col_end = std::min(last_col, grid.width() - 1LL);
   const long long row_begin = std::max(first_row, 0LL), row_end = std::min(last_row, grid.height() - 1LL);
-  const double turn = std::fmod(std::abs(wall.centre.yaw), std::numbers::pi / 2.0);
-  const bool axis_aligned = turn < 1e-12 || std::numbers::pi / 2.0 - turn < 1e-12;
+  const bool axis_aligned = turned_by_right_angles(wall.centre.yaw);
   for (long long row = row_begin; row <= row_end; ++row) {
     for (long long col = col_begin; col <= col_end; ++col) {
       const int c = static_cast<int>(col), r = static_cast<int>(row);
@@ -87,8 +115,7 @@ void mark_wall(grid::OccupancyGrid& grid, const WallRectangle& wall) {
   }
 }
 
-std::vector<WallRectangle> walls_of_bitmap(const BitmapPlacement& bitmap, double& finest_pixel,
-                                           std::vector<std::string>& warnings) {
+void add_bitmap_walls(const BitmapPlacement& bitmap, MapPlan& plan, std::vector<std::string>& warnings) {
   map::MapLoadOptions options;
   options.resolution = 1.0;  // only the pixels are used
   if (bitmap.walls == WallPixels::non_zero) {
@@ -127,17 +154,19 @@ std::vector<WallRectangle> walls_of_bitmap(const BitmapPlacement& bitmap, double
     if (last_col < 0) {
       warnings.push_back(located(bitmap.where, "the bitmap " + text::excerpt(bitmap.file.filename().string()) +
                                                    " has no dark pixels: no walls"));
-      return {};
+      return;
     }
     sx = bitmap.stretch_to.x() / (last_col + 1 - first_col);
     sy = bitmap.stretch_to.y() / (last_row + 1 - first_row);
     centre_x = (first_col + last_col + 1) / 2.0;
     centre_y = (first_row + last_row + 1) / 2.0;
   }
-  if (!(sx > 0.0) || !(sy > 0.0)) return {};
-  finest_pixel = finest_pixel > 0.0 ? std::min({finest_pixel, sx, sy}) : std::min(sx, sy);
+  if (!(sx > 0.0) || !(sy > 0.0)) return;
+  plan.bitmaps.push_back({.pixel = std::min(sx, sy),
+                          .corner = bitmap.pose.transform({-centre_x * sx, -centre_y * sy}),
+                          .axis_aligned = turned_by_right_angles(bitmap.pose.yaw)});
 
-  std::vector<WallRectangle> walls;
+  std::vector<WallRectangle>& walls = plan.walls;
   for (int row = 0; row < pixels.height(); ++row) {
     for (int col = 0; col < pixels.width();) {
       if (!wall_at(col, row)) {
@@ -152,7 +181,6 @@ std::vector<WallRectangle> walls_of_bitmap(const BitmapPlacement& bitmap, double
                                     {(col - run_start) * sx, sy}});
     }
   }
-  return walls;
 }
 
 grid::OccupancyGrid build_map(const MapPlan& plan, std::vector<std::string>& warnings) {
@@ -188,26 +216,39 @@ grid::OccupancyGrid build_map(const MapPlan& plan, std::vector<std::string>& war
                                          ")): a size or pose is far too large");
   }
 
-  double resolution = plan.resolution;
-  const auto cells_along = [&](double length, double cell) { return std::max(1.0, std::ceil(length / cell - 1e-6)); };
-  const auto cell_count = [&](double cell) {
-    return cells_along(high.x() - low.x(), cell) * cells_along(high.y() - low.y(), cell);
+  // The cell, and the origin that lays cells on a bitmap's pixels when the
+  // cell is that bitmap's pixel.
+  const PixelLattice* lattice = cell_lattice(plan);
+  if (lattice != nullptr && !plan.positive_quadrant) {
+    for (int axis = 0; axis < 2; ++axis) {
+      const double cells_below = std::ceil((lattice->corner[axis] - low[axis]) / lattice->pixel - 1e-9);
+      low[axis] = lattice->corner[axis] - cells_below * lattice->pixel;
+    }
+  }
+  const double cell = lattice != nullptr ? lattice->pixel : plan.resolution;
+  double finest_pixel = std::numeric_limits<double>::infinity();
+  for (const PixelLattice& bitmap : plan.bitmaps) finest_pixel = std::min(finest_pixel, bitmap.pixel);
+
+  double resolution = cell;
+  const auto cells_along = [&](double length, double size) { return std::max(1.0, std::ceil(length / size - 1e-6)); };
+  const auto cell_count = [&](double size) {
+    return cells_along(high.x() - low.x(), size) * cells_along(high.y() - low.y(), size);
   };
   const double wanted = cell_count(resolution);
   if (wanted > static_cast<double>(grid::kMaxGridCells)) {
     double factor = std::ceil(std::sqrt(wanted / static_cast<double>(grid::kMaxGridCells)));
-    while (cell_count(plan.resolution * factor) > static_cast<double>(grid::kMaxGridCells)) factor += 1.0;
-    resolution = plan.resolution * factor;
+    while (cell_count(cell * factor) > static_cast<double>(grid::kMaxGridCells)) factor += 1.0;
+    resolution = cell * factor;
     const std::string area = std::to_string(high.x() - low.x()) + " x " + std::to_string(high.y() - low.y()) + " m";
-    if (plan.finest_pixel > 0.0 && resolution > plan.finest_pixel * (1.0 + 1e-9)) {
-      throw WorldFileError(plan.where, "the world covers " + area + ": at a cell of " + std::to_string(plan.resolution) +
+    if (resolution > finest_pixel * (1.0 + 1e-9)) {
+      throw WorldFileError(plan.where, "the world covers " + area + ": at a cell of " + std::to_string(cell) +
                                            " m it needs " + std::to_string(static_cast<long long>(wanted)) +
                                            " cells, more than the limit of " + std::to_string(grid::kMaxGridCells) +
                                            ", and a cell coarser than the bitmap's pixel (" +
-                                           std::to_string(plan.finest_pixel) + " m) would lose walls");
+                                           std::to_string(finest_pixel) + " m) would lose walls");
     }
     warnings.push_back(located(plan.where, "the map's cell is " + std::to_string(resolution) + " m instead of " +
-                                               std::to_string(plan.resolution) + " m: the world covers " + area +
+                                               std::to_string(cell) + " m: the world covers " + area +
                                                ", which would need more than " +
                                                std::to_string(grid::kMaxGridCells) + " cells"));
   }
@@ -215,7 +256,22 @@ grid::OccupancyGrid build_map(const MapPlan& plan, std::vector<std::string>& war
   const int height = static_cast<int>(cells_along(high.y() - low.y(), resolution));
   grid::OccupancyGrid map(width, height, resolution, low, grid::CellState::free);
   for (const WallRectangle& wall : plan.walls) mark_wall(map, wall);
-  if (plan.positive_quadrant && width >= 3 && height >= 3) {
+  if (plan.positive_quadrant && lattice != nullptr) {
+    // Stage 1.3's closing wall is one `resolution` cell thick, one cell
+    // inside the border; on the bitmap's coarser cells it occupies the
+    // cells it overlaps.
+    const double r = plan.resolution;
+    const double x_end = cells_along(high.x(), r) * r, y_end = cells_along(high.y(), r) * r;
+    if (x_end >= 3.0 * r && y_end >= 3.0 * r) {
+      const double across = x_end - 2.0 * r, up = y_end - 2.0 * r;
+      for (const WallRectangle& side : {WallRectangle{{x_end / 2.0, 1.5 * r, 0.0}, {across, r}},
+                                        WallRectangle{{x_end / 2.0, y_end - 1.5 * r, 0.0}, {across, r}},
+                                        WallRectangle{{1.5 * r, y_end / 2.0, 0.0}, {r, up}},
+                                        WallRectangle{{x_end - 1.5 * r, y_end / 2.0, 0.0}, {r, up}}}) {
+        mark_wall(map, side);
+      }
+    }
+  } else if (plan.positive_quadrant && width >= 3 && height >= 3) {
     // Stage 1.3 closes every world with a wall one cell inside its border.
     for (int col = 1; col <= width - 2; ++col) {
       map.set(col, 1, grid::CellState::occupied);

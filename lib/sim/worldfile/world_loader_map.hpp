@@ -43,16 +43,25 @@ struct BitmapPlacement {
   geometry::Pose2 pose;
 };
 
-// Bitmaps as wall rectangles (runs of wall pixels along rows). Throws
-// WorldFileError at `where` for an unreadable image. Returns the finest
-// pixel edge in `finest_pixel`.
-std::vector<WallRectangle> walls_of_bitmap(const BitmapPlacement& bitmap, double& finest_pixel,
-                                           std::vector<std::string>& warnings);
+// Where a bitmap's pixels lie in the world, so that the map's cells can be
+// its pixels.
+struct PixelLattice {
+  double pixel = 0.0;  // the finer of the pixel's two edges, metres
+  Eigen::Vector2d corner = Eigen::Vector2d::Zero();  // a pixel corner in the world
+  bool axis_aligned = true;  // turned by a whole number of right angles
+};
+
+struct MapPlan;
+
+// A bitmap as wall rectangles (runs of wall pixels along rows), added to
+// `plan` with its pixel lattice. Throws WorldFileError at `where` for an
+// unreadable image.
+void add_bitmap_walls(const BitmapPlacement& bitmap, MapPlan& plan, std::vector<std::string>& warnings);
 
 struct MapPlan {
   double resolution = 0.05;
   std::vector<WallRectangle> walls;
-  double finest_pixel = 0.0;  // 0: no bitmap; the cell is never made coarser than this
+  std::vector<PixelLattice> bitmaps;  // one per bitmap with walls
   std::vector<Eigen::Vector2d> must_cover;  // model positions the grid must hold
   // Stage 1.3: the world is [0, max(minimum_size, extent)] in x and y, and
   // closed by a wall one cell inside its border. Otherwise the grid covers
@@ -63,9 +72,13 @@ struct MapPlan {
 };
 
 // Every cell a wall overlaps (more than touching) is occupied, the others
-// free. The grid is made coarser (a whole multiple of `resolution`) when it
-// would have more than grid::kMaxGridCells cells, never coarser than the
-// finest bitmap pixel (an error then); a warning says so.
+// free. The cell is `resolution`, or the finest bitmap pixel where that is
+// coarser and every bitmap is axis-aligned: then the cells are laid on that
+// bitmap's pixels, which they match one for one (rays and collisions cost
+// what the bitmap's detail needs, not what `resolution` would). The grid is
+// made coarser (a whole multiple of that cell) when it would have more than
+// grid::kMaxGridCells cells, never coarser than the finest bitmap pixel (an
+// error then); a warning says so.
 grid::OccupancyGrid build_map(const MapPlan& plan, std::vector<std::string>& warnings);
 
 // Marks the cells `wall` overlaps occupied.

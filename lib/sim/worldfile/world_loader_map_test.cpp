@@ -104,16 +104,90 @@ TEST(WorldLoaderMapBuild, AHugeWorldGetsCoarserCellsButNeverCoarserThanItsBitmap
   EXPECT_NEAR(map.resolution(), 0.06, 1e-12);  // 302 m / 0.06 = 5034 cells a side
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("the map's cell is 0.060000 m instead of 0.020000 m"), std::string::npos) << warnings[0];
-  plan.finest_pixel = 0.05;
+  // A 0.025 m pixel (the map's cell then) would need 12080 x 12080 cells.
+  plan.bitmaps = {{.pixel = 0.025, .corner = {-150.0, -150.0}, .axis_aligned = true}};
   plan.where = SourceLocation{"big.world"};
   try {
     build_map(plan, warnings);
     FAIL() << "no error";
   } catch (const WorldFileError& error) {
-    EXPECT_NE(std::string(error.what()).find("big.world: the world covers 302.000000 x 302.000000 m"),
+    EXPECT_NE(std::string(error.what()).find("big.world: the world covers 302.000000 x 302.000000 m: at a cell of "
+                                             "0.025000 m"),
               std::string::npos)
         << error.what();
   }
+}
+
+// Pixels of 0.1 m at x = 0.35 + 0.1 i, y = -0.45 + 0.1 j, and walls that
+// are runs of them (as add_bitmap_walls makes them).
+MapPlan plan_on_pixels(bool axis_aligned) {
+  MapPlan plan;
+  plan.resolution = 0.02;
+  plan.bitmaps = {{.pixel = 0.1, .corner = {0.35, -0.45}, .axis_aligned = axis_aligned}};
+  plan.walls = {{{0.35 + 0.15, -0.45 + 0.05, 0.0}, {0.3, 0.1}},   // pixels (0..2, 0)
+                {{0.35 + 0.45, -0.45 + 0.95, 0.0}, {0.1, 0.1}},   // pixel (4, 9)
+                {{0.35 + 2.0, -0.45 + 0.35, 0.0}, {4.0, 0.1}}};  // pixels (0..39, 3)
+  return plan;
+}
+
+TEST(WorldLoaderMapBuild, CellsAreTheBitmapsPixelsWhenThoseAreCoarser) {
+  std::vector<std::string> warnings;
+  MapPlan plan = plan_on_pixels(true);
+  plan.must_cover = {{0.0, -0.5}};  // a robot off the pixels' lattice
+  const grid::OccupancyGrid map = build_map(plan, warnings);
+  EXPECT_DOUBLE_EQ(map.resolution(), 0.1);
+  // The margin of at least 1 m around (0, -0.5) ends on a pixel border.
+  EXPECT_NEAR(map.origin().x(), 0.35 - 1.4, 1e-9);
+  EXPECT_NEAR(map.origin().y(), -0.45 - 1.1, 1e-9);
+  EXPECT_GE(map.origin().x() + map.width() * 0.1, 0.35 + 4.0 + 1.0 - 1e-9);
+  // Each wall pixel is one cell, and nothing else is occupied.
+  EXPECT_EQ(occupied_cells(map), 3 + 1 + 40);
+  for (int i = 0; i < 40; ++i) {
+    for (int j = 0; j < 10; ++j) {
+      const bool wall = (j == 0 && i <= 2) || (i == 4 && j == 9) || j == 3;
+      EXPECT_EQ(map.state_at_world({0.35 + 0.1 * i + 0.05, -0.45 + 0.1 * j + 0.05}) == CellState::occupied, wall)
+          << i << "," << j;
+    }
+  }
+  EXPECT_TRUE(warnings.empty());
+}
+
+TEST(WorldLoaderMapBuild, ATurnedBitmapKeepsTheWorldsResolution) {
+  std::vector<std::string> warnings;
+  const grid::OccupancyGrid map = build_map(plan_on_pixels(false), warnings);
+  EXPECT_DOUBLE_EQ(map.resolution(), 0.02);
+  // The 1 m margin puts cell borders on the walls' edges: 15 x 5, 5 x 5 and
+  // 200 x 5 cells of 2 cm.
+  EXPECT_NEAR(map.origin().x(), 0.35 - 1.0, 1e-9);
+  EXPECT_EQ(occupied_cells(map), 75 + 25 + 1000);
+}
+
+TEST(WorldLoaderMapBuild, Stage13BitmapCellsStartAtTheOriginAndKeepTheClosingWall) {
+  MapPlan plan;
+  plan.resolution = 0.05;
+  plan.positive_quadrant = true;
+  plan.minimum_size = {4.0, 3.0};
+  plan.bitmaps = {{.pixel = 0.1, .corner = {0.0, 0.0}, .axis_aligned = true}};
+  plan.walls = {{{1.05, 1.05, 0.0}, {0.1, 0.1}}};
+  std::vector<std::string> warnings;
+  const grid::OccupancyGrid map = build_map(plan, warnings);
+  EXPECT_DOUBLE_EQ(map.resolution(), 0.1);
+  EXPECT_EQ(map.origin(), Eigen::Vector2d::Zero());
+  EXPECT_EQ(map.width(), 40);
+  EXPECT_EQ(map.height(), 30);
+  // The closing wall spans [0.05, 0.1] and [3.9, 3.95] in x (one 5 cm cell
+  // inside the border), so the 0.1 m cells holding those.
+  EXPECT_EQ(map.at(0, 15), CellState::occupied);
+  EXPECT_EQ(map.at(39, 15), CellState::occupied);
+  EXPECT_EQ(map.at(20, 0), CellState::occupied);
+  EXPECT_EQ(map.at(20, 29), CellState::occupied);
+  EXPECT_EQ(map.at(1, 15), CellState::free);
+  EXPECT_EQ(map.at(38, 15), CellState::free);
+  EXPECT_EQ(map.at(10, 10), CellState::occupied);  // the pixel
+  EXPECT_EQ(map.at(11, 10), CellState::free);
+  // Pixels off the origin's lattice: the cell stays `resolution`.
+  plan.bitmaps[0].corner = {0.05, 0.0};
+  EXPECT_DOUBLE_EQ(build_map(plan, warnings).resolution(), 0.05);
 }
 
 }  // namespace world_loader_map_test

@@ -177,8 +177,7 @@ class Stage13Reader {
       properties.warn(crop->where, "`crop` is not supported: the whole bitmap is used");
     }
     properties.skip({"color", "name"});
-    auto walls = walls_of_bitmap(placement, context_.map.finest_pixel, context_.warnings);
-    context_.map.walls.insert(context_.map.walls.end(), walls.begin(), walls.end());
+    add_bitmap_walls(placement, context_.map, context_.warnings);
   }
 
   geometry::Pose2 pose_of(PropertyReader& properties) {

@@ -147,8 +147,7 @@ class Stage4Reader {
         throw WorldFileError(bitmap->where, "a model with a bitmap needs a size above 0 in x and y");
       }
       placement.pose = body_pose;
-      auto walls = walls_of_bitmap(placement, context_.map.finest_pixel, context_.warnings);
-      context_.map.walls.insert(context_.map.walls.end(), walls.begin(), walls.end());
+      add_bitmap_walls(placement, context_.map, context_.warnings);
       body.present = false;  // its walls are the map's
     }
     if (properties.integer("boundary", 0) != 0) {
