@@ -90,8 +90,12 @@ grid::OccupancyGrid load_image_map(const std::filesystem::path& image_file,
   check_image_size(image_file);
   const std::optional<GreyImage> image = read_grey_image(image_file);
   if (!image) throw MapFileError(image_file, "cannot read as an image");
+  if (options.origin && !options.origin->allFinite()) {
+    throw MapFileError(image_file, "the map's origin must be finite");
+  }
   // Player 1.5 (manual 7.3): the world origin is the centre of the map.
-  const Eigen::Vector2d origin(-0.5 * image->width * resolution, -0.5 * image->height * resolution);
+  const Eigen::Vector2d origin = options.origin.value_or(
+      Eigen::Vector2d(-0.5 * image->width * resolution, -0.5 * image->height * resolution));
   return grid_from_image(*image, resolution, origin,
                          {options.negate, options.occupied_threshold, options.free_threshold});
 }

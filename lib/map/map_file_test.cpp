@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <iterator>
@@ -120,6 +121,25 @@ TEST_F(MapFileTest, PlainImagesAreCentredOnTheWorldOrigin) {
   EXPECT_DOUBLE_EQ(grid.origin().x(), -0.5);
   EXPECT_DOUBLE_EQ(grid.origin().y(), -0.75);
   EXPECT_EQ(grid.world_to_cell({0.01, 0.01}), Eigen::Vector2i(2, 3));
+}
+
+TEST_F(MapFileTest, AnOriginPlacesThePlainImagesBottomLeftCorner) {
+  // 4 x 6 pixels, one black pixel at the top left (column 0, row 0 of the image).
+  std::vector<std::uint8_t> pixels(24, 255);
+  pixels[0] = 0;
+  const fs::path file = write_pgm("placed.pgm", 4, 6, pixels);
+  const grid::OccupancyGrid grid = load_map(file, {.resolution = 0.25, .origin = Eigen::Vector2d(0.0, 0.0)});
+  EXPECT_DOUBLE_EQ(grid.origin().x(), 0.0);
+  EXPECT_DOUBLE_EQ(grid.origin().y(), 0.0);
+  // The image's top row is the grid's highest: y in [1.25, 1.5).
+  EXPECT_EQ(grid.state_at_world({0.1, 1.4}), CellState::occupied);
+  EXPECT_EQ(grid.state_at_world({0.1, 0.1}), CellState::free);
+  EXPECT_EQ(grid.state_at_world({-0.1, 0.1}), CellState::unknown);  // outside
+  const grid::OccupancyGrid shifted = load_map(file, {.resolution = 0.25, .origin = Eigen::Vector2d(-2.0, 3.0)});
+  EXPECT_EQ(shifted.state_at_world({-1.9, 4.4}), CellState::occupied);
+  const std::string error =
+      error_of(file, {.resolution = 0.25, .origin = Eigen::Vector2d(std::nan(""), 0.0)});
+  EXPECT_NE(error.find("origin must be finite"), std::string::npos) << error;
 }
 
 TEST_F(MapFileTest, ColourImagesAreReadAsGrey) {

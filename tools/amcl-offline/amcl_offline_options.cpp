@@ -159,6 +159,10 @@ LocalizeOptions make_localize_options(const LocalizeCommand& command) {
   options.format = parse_format(command.format);
   options.map_loading.resolution = command.scale;
   options.map_loading.negate = command.negate;
+  if (command.origin) {
+    const auto corner = parse_numbers(*command.origin, 2, "--origin");
+    options.map_loading.origin = Eigen::Vector2d(corner[0], corner[1]);
+  }
   options.output = command.output;
   options.plot = command.plot;
   options.progress = command.progress;

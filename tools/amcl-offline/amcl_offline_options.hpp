@@ -47,6 +47,7 @@ struct LocalizeCommand {
   std::string map;
   std::optional<double> scale;  // m/pixel for Player images
   bool negate = false;
+  std::optional<std::string> origin;  // "X,Y": a map image's bottom-left corner (default: centred)
   std::optional<std::string> init_pose;  // "X,Y,YAW_DEG" or "truth"
   std::optional<std::string> init_var;   // "SX,SY,SYAW_DEG" (standard deviations)
   bool global = false;

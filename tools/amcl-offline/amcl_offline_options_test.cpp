@@ -81,6 +81,19 @@ TEST(AmclOfflineOptions, FlagsReachTheFilter) {
   ASSERT_TRUE(options.map_loading.resolution.has_value());
   EXPECT_DOUBLE_EQ(*options.map_loading.resolution, 0.03);
   EXPECT_TRUE(options.map_loading.negate);
+  EXPECT_FALSE(options.map_loading.origin.has_value());  // centred, as Player 1.5
+}
+
+TEST(AmclOfflineOptions, OriginPlacesTheMapImage) {
+  auto command = global_command();
+  command.origin = "0,-1.5";
+  const auto options = make_localize_options(command);
+  ASSERT_TRUE(options.map_loading.origin.has_value());
+  EXPECT_EQ(*options.map_loading.origin, Eigen::Vector2d(0.0, -1.5));
+  command.origin = "0";
+  EXPECT_TRUE(contains(usage_error(command), "--origin")) << usage_error(command);
+  command.origin = "0,x";
+  EXPECT_TRUE(contains(usage_error(command), "--origin: 'x' is not a number")) << usage_error(command);
 }
 
 TEST(AmclOfflineOptions, InitialPoseInDegreesBecomesRadians) {

@@ -15,13 +15,15 @@ namespace offline = playerkit::amcl_offline;
 constexpr const char* kFooter = R"(Logs: Player text logs or CARMEN logs (Radish), told apart by content, .gz too.
 Odometry comes from the log's position data (CARMEN: the odom fields of FLASER).
 Maps: a Player image (.pgm/.pnm/.png with --scale M_PER_PX, centred on the
-origin) or a ROS map_server .yaml.
+origin as Player 1.5's map driver placed it, or with its bottom-left corner at
+--origin X,Y: 0,0 for the bitmap of a Stage 1.3 world) or a ROS map_server .yaml.
 
 Examples:
   amcl-offline map intel.log.gz -o intel.pgm --resolution 0.05      map + intel.yaml
   amcl-offline perturb intel.log.gz -o intel-odom.log --seed 1      degrade odometry, keep truth
   amcl-offline localize intel-odom.log --map intel.yaml --init-pose truth -o est.csv --plot est.png
   amcl-offline localize run.log --map cave.pnm --scale 0.03 --negate --global --seed 7
+  amcl-offline localize sim.log --map cave.pnm --scale 0.03 --negate --origin 0,0 --init-pose truth
   amcl-offline eval est.csv --truth intel.log.gz
 
 localize writes one row per scan: time,x,y,yaw,std_x,std_y,std_yaw,particles
@@ -95,6 +97,7 @@ int main(int argc, char** argv) {
   localize_app->add_option("--map", localize.map, "map image or ROS .yaml")->required();
   localize_app->add_option("--scale", localize.scale, "metres per pixel of a map image");
   localize_app->add_flag("--negate", localize.negate, "map image: white is occupied");
+  localize_app->add_option("--origin", localize.origin, "X,Y: where a map image's bottom-left corner lies (default: centred)");
   localize_app->add_option("--init-pose", localize.init_pose, "X,Y,YAW_DEG, or 'truth' (the log's first true pose)");
   localize_app->add_option("--init-var", localize.init_var, "standard deviations SX,SY,SYAW_DEG (default 0.1,0.1,3)");
   localize_app->add_flag("--global", localize.global, "start anywhere in the free space");
@@ -124,6 +127,7 @@ int main(int argc, char** argv) {
   plan_app->add_option("--map", plan.map, "map image or ROS .yaml")->required();
   plan_app->add_option("--scale", plan.scale, "metres per pixel of a map image");
   plan_app->add_flag("--negate", plan.negate, "map image: white is occupied");
+  plan_app->add_option("--origin", plan.origin, "X,Y: where a map image's bottom-left corner lies (default: centred)");
   plan_app->add_option("--start", plan.start, "X,Y in metres");
   plan_app->add_option("--goal", plan.goal, "X,Y in metres");
   plan_app->add_option("--track", plan.track, "a localize CSV: with --at, its estimate then is the start");

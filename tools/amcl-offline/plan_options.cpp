@@ -63,6 +63,7 @@ PlanOptions make_plan_options(const PlanCommand& command) {
   if (command.scale && !(*command.scale > 0)) throw UsageError("--scale must be > 0");
   options.map_loading.resolution = command.scale;
   options.map_loading.negate = command.negate;
+  if (command.origin) options.map_loading.origin = parse_point(*command.origin, "--origin");
   options.compare = command.compare;
   options.track = command.track;
   options.at = command.at;

@@ -23,6 +23,7 @@ struct PlanCommand {
   std::string map;
   std::optional<double> scale;  // m/pixel for Player images
   bool negate = false;
+  std::optional<std::string> origin;  // "X,Y": a map image's bottom-left corner (default: centred)
   std::optional<std::string> start;  // "X,Y"
   std::optional<std::string> goal;   // "X,Y"
   std::optional<std::string> track;  // a localize CSV (time,x,y,yaw,...)

@@ -41,6 +41,7 @@ TEST(PlanOptions, FlagsReachTheOptions) {
   command.format = "json";
   command.scale = 0.05;
   command.negate = true;
+  command.origin = "0,0";
   command.plot = "p.png";
   command.output = "out.json";
   const PlanOptions options = make_plan_options(command);
@@ -49,6 +50,7 @@ TEST(PlanOptions, FlagsReachTheOptions) {
   EXPECT_EQ(options.format, PlanFormat::json);
   EXPECT_EQ(options.map_loading.resolution, 0.05);
   EXPECT_TRUE(options.map_loading.negate);
+  EXPECT_EQ(options.map_loading.origin, Eigen::Vector2d(0.0, 0.0));
   EXPECT_EQ(options.plot, "p.png");
   EXPECT_EQ(options.output, "out.json");
 }
@@ -119,6 +121,9 @@ TEST(PlanOptions, MistakesNameTheirFlag) {
   command.format.reset();
   command.scale = 0.0;
   expect_usage_error(command, "--scale must be > 0");
+  command.scale.reset();
+  command.origin = "1;2";
+  expect_usage_error(command, "--origin: '1;2' is not X,Y");
 }
 
 }  // namespace plan_options_test
