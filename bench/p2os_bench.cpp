@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "config/config_file.hpp"
+#include "core/server_clock.hpp"
 #include "core/clock.hpp"
 #include "core/device_table.hpp"
 #include "core/driver_registry.hpp"
@@ -109,7 +110,7 @@ int main(int argc, char** argv) {
   emulators::EmulatorRunner robot(std::make_unique<emulators::P2osRobotEmulator>(robot_options),
                                   emulators::PtyEndpoint{});
 
-  core::WallClock clock;
+  core::ServerClock clock;  // the wall clock: no driver here claims it
   core::Logger logger("p2os_bench");
   logger.set_level(core::LogLevel::kWarning);
   core::DriverRegistry registry;

@@ -65,6 +65,7 @@
 #include <nlohmann/json.hpp>
 
 #include "config/config_file.hpp"
+#include "core/server_clock.hpp"
 #include "core/clock.hpp"
 #include "core/device_table.hpp"
 #include "core/driver.hpp"
@@ -579,7 +580,7 @@ std::string fixed(double value, int decimals) {
 }
 
 int run(const Options& options) {
-  core::WallClock clock;
+  core::ServerClock clock;  // the wall clock: no driver here claims it
   core::Logger logger("server_load_bench");
   logger.set_level(core::LogLevel::kWarning);
 

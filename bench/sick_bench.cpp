@@ -48,6 +48,7 @@
 
 #include "algorithms/grid/occupancy_grid.hpp"
 #include "config/config_file.hpp"
+#include "core/server_clock.hpp"
 #include "core/clock.hpp"
 #include "core/device.hpp"
 #include "core/device_table.hpp"
@@ -229,7 +230,7 @@ int main(int argc, char** argv) {
   auto laser = std::make_unique<TimedLaser>(laser_options);
   emulators::EmulatorRunner runner(std::move(laser), emulators::PtyEndpoint{});
 
-  core::WallClock clock;
+  core::ServerClock clock;  // the wall clock: no driver here claims it
   core::Logger logger("sick_bench");
   logger.set_level(core::LogLevel::kWarning);
   core::DriverRegistry registry;
