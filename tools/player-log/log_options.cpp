@@ -1,5 +1,7 @@
 #include "log_options.hpp"
 
+#include <cmath>
+
 namespace playerkit::plog {
 namespace {
 
@@ -45,6 +47,14 @@ RecordOptions make_record_options(const RecordCommandLine& command_line) {
   if (!(command_line.timeout > 0)) throw UsageError("--timeout must be > 0");
   options.duration = command_line.duration;
   options.timeout = command_line.timeout;
+  if (command_line.frequency) {
+    const double hz = *command_line.frequency;
+    if (!(hz >= 1 && hz <= 65535) || hz != std::floor(hz)) {
+      throw UsageError("--frequency is the server's data frequency: a whole number of Hz, 1 to 65535");
+    }
+    if (options.from_stdin) throw UsageError("--frequency is for recording from a server, not from stdin");
+    options.frequency = static_cast<std::uint16_t>(hz);
+  }
   return options;
 }
 

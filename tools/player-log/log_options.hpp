@@ -43,6 +43,7 @@ struct RecordCommandLine {
   std::optional<std::uint64_t> count;
   double timeout = RecordOptions().timeout;
   bool strict = false;
+  std::optional<double> frequency;  // Hz, a whole number
 };
 
 struct ReplayCommandLine {

@@ -98,6 +98,25 @@ TEST(LogOptions, RecordTargetsAndLimits) {
   EXPECT_NE(usage_error(make_record_options, command_line), "");
 }
 
+TEST(LogOptions, RecordFrequencyIsTheServersWholeHertz) {
+  RecordCommandLine command_line;
+  command_line.targets = {"laser:0"};
+  command_line.output = "run.log";
+  EXPECT_FALSE(make_record_options(command_line).frequency.has_value());
+  command_line.frequency = 100;
+  EXPECT_EQ(make_record_options(command_line).frequency, std::uint16_t{100});
+  for (const double bad : {0.0, 2.5, 65536.0, -1.0}) {
+    command_line.frequency = bad;
+    EXPECT_EQ(usage_error(make_record_options, command_line),
+              "--frequency is the server's data frequency: a whole number of Hz, 1 to 65535")
+        << bad;
+  }
+  command_line.frequency = 40;
+  command_line.targets = {"-"};
+  EXPECT_EQ(usage_error(make_record_options, command_line),
+            "--frequency is for recording from a server, not from stdin");
+}
+
 TEST(LogOptions, ReplayFlagsReachTheOptions) {
   ReplayCommandLine command_line;
   command_line.input = "run.log";

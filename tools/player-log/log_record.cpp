@@ -113,6 +113,7 @@ void record_from_server(const RecordOptions& options, Recording& output, std::os
                                protocol::to_string(device));
     }
   }
+  if (options.frequency) connection.set_frequency(*options.frequency);
   auto& stream = output.stream();
   stream << log::log_file_header();
   output.flush();

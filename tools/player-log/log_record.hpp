@@ -33,6 +33,10 @@ struct RecordOptions {
   std::optional<std::uint64_t> count;  // data messages
   double timeout = 5.0;  // s, connecting and each request
   bool strict = false;   // stdin: a malformed line is fatal
+  // The server's data frequency (push rounds per second); nullopt: the
+  // server's default, Player 1.5's 10 Hz, which keeps only the newest sample
+  // of a faster device per round.
+  std::optional<std::uint16_t> frequency;
 };
 
 // The targets as typed: ["-"] or [HOST[:PORT]] DEVICE...; throws UsageError.

@@ -115,6 +115,10 @@ int main(int argc, char** argv) {
   record->add_option("--timeout", record_line.timeout, "seconds to wait for the connection and each reply")
       ->capture_default_str();
   record->add_flag("--strict", record_line.strict, "stdin: a malformed line is an error (exit 1)");
+  record->add_option("--frequency", record_line.frequency,
+                     "the server's data rounds per second (default 10, as Player 1.5; each round carries a "
+                     "device's newest sample only, so record a 40 Hz laser at 40 or more)")
+      ->type_name("HZ");
 
   auto* replay = app.add_subcommand("replay", "serve a log's devices to clients, as player-serve -r does, without a config");
   plog::ReplayCommandLine replay_line;
