@@ -2,7 +2,8 @@
 //   * DistanceMap construction (exact Euclidean transform) on N x N grids,
 //     N = 1000, 2000, 4000 (the 4000 x 4000 figure answers issue 6);
 //   * cast_ray throughput (rays/s) on the 4000 x 4000 map, 30 m rays, and
-//     RangeCaster's on the same rays, from anywhere or from a 2 m cloud;
+//     RangeCaster's and SquareCaster's on the same rays, from anywhere or
+//     from a 2 m cloud, and the casters' builds;
 //   * OccupancyGridBuilder::add_scan throughput (scans/s, 361 beams).
 //
 //   ./build/bench/distance_map_bench --benchmark_counters_tabular=true
@@ -26,6 +27,7 @@
 #include "algorithms/grid/occupancy_grid_builder.hpp"
 #include "algorithms/grid/range_caster.hpp"
 #include "algorithms/grid/ray_cast.hpp"
+#include "algorithms/grid/square_caster.hpp"
 
 namespace playerkit::grid {
 namespace {
@@ -133,6 +135,51 @@ void BM_RangeCaster(benchmark::State& state) {
   time_rays(state, rays, [&](std::size_t k) { return caster.range(rays.origins[k], rays.angles[k], 30.0); });
 }
 BENCHMARK(BM_RangeCaster)->ArgNames({"stop_on_occupied_only", "cloud"})->ArgsProduct({{0, 1}, {0, 1}});
+
+// The same rays by clear squares (SquareCaster), one by one and all 4096
+// in one call (two walked side by side). Its build is outside the loop.
+void BM_SquareCaster(benchmark::State& state) {
+  const OccupancyGrid& grid = building(4000);
+  const RayStop stop = state.range(0) ? RayStop::occupied : RayStop::occupied_or_unknown;
+  const SquareCaster caster(grid, stop);
+  const Rays& rays = random_rays(state.range(1) != 0);
+  time_rays(state, rays, [&](std::size_t k) { return caster.range(rays.origins[k], rays.angles[k], 30.0); });
+}
+BENCHMARK(BM_SquareCaster)->ArgNames({"stop_on_occupied_only", "cloud"})->ArgsProduct({{0, 1}, {0, 1}});
+
+void BM_SquareCasterBatch(benchmark::State& state) {
+  const OccupancyGrid& grid = building(4000);
+  const RayStop stop = state.range(0) ? RayStop::occupied : RayStop::occupied_or_unknown;
+  const SquareCaster caster(grid, stop);
+  const Rays& rays = random_rays(state.range(1) != 0);
+  std::vector<SquareCaster::Ray> batch;
+  for (std::size_t k = 0; k < rays.angles.size(); ++k) {
+    batch.push_back({rays.origins[k], {std::cos(rays.angles[k]), std::sin(rays.angles[k])}, 30.0});
+  }
+  std::vector<double> ranges(batch.size());
+  for (auto _ : state) {
+    caster.ranges(batch, ranges);
+    benchmark::DoNotOptimize(ranges.data());
+  }
+  double total = 0.0;
+  for (const double range : ranges) total += range;
+  state.counters["mean_range_m"] = total / static_cast<double>(ranges.size());
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(batch.size()));
+}
+BENCHMARK(BM_SquareCasterBatch)->ArgNames({"stop_on_occupied_only", "cloud"})->ArgsProduct({{0, 1}, {0, 1}});
+
+// The casters' builds on the 4000 x 4000 map.
+void BM_BuildRangeCaster(benchmark::State& state) {
+  const OccupancyGrid& grid = building(4000);
+  for (auto _ : state) benchmark::DoNotOptimize(RangeCaster(grid, RayStop::occupied).stop());
+}
+BENCHMARK(BM_BuildRangeCaster)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_BuildSquareCaster(benchmark::State& state) {
+  const OccupancyGrid& grid = building(4000);
+  for (auto _ : state) benchmark::DoNotOptimize(SquareCaster(grid, RayStop::occupied).stop());
+}
+BENCHMARK(BM_BuildSquareCaster)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_BuilderAddScan(benchmark::State& state) {
   const OccupancyGrid& grid = building(2000);  // 100 m x 100 m

@@ -1,0 +1,224 @@
+#include "algorithms/grid/square_caster.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace playerkit::grid {
+namespace {
+
+constexpr int kMostClearance = 255;
+// A direction component this small counts as 0: its crossings are then
+// "never" (kNeverInverse times the distance, finite so that no inf * 0
+// appears), and a ray with both components this small has no direction.
+constexpr double kNoComponent = 1e-300;
+constexpr double kNeverInverse = 1e300;
+// floor() by truncation of a shifted value: the coordinates floored lie
+// within the square being left, so never below -256, and truncation needs
+// no call or branch where SSE4.1 is not assumed. Shifting may round a value
+// within 1e-13 of a cell border across it: a tie the ray decides either way.
+constexpr double kFloorShift = 512.0;
+
+bool square_caster_stops(CellState state, RayStop stop) {
+  return stop == RayStop::occupied ? state == CellState::occupied : state != CellState::free;
+}
+
+int floor_cell(double cells) {
+  return static_cast<int>(static_cast<long long>(cells + kFloorShift) - static_cast<long long>(kFloorShift));
+}
+
+}  // namespace
+
+// What a ray's steps read, fixed for the ray: cell units from the grid's
+// corner. The walk's position (cell, where it was entered) lives in the
+// callers' locals, so that it stays in registers from step to step.
+struct SquareCaster::Walk {
+  double x = 0.0, y = 0.0;    // origin
+  double dx = 0.0, dy = 0.0;  // direction
+  double inverse_x = 0.0, inverse_y = 0.0;
+  double length = 0.0;        // max_range
+  int step_x = 1, step_y = 1;
+};
+
+SquareCaster::SquareCaster(const OccupancyGrid& grid, RayStop stop)
+    : stop_(stop), width_(grid.width()), height_(grid.height()), resolution_(grid.resolution()), origin_(grid.origin()) {
+  if (grid.empty()) return;
+  const auto at = [this](int col, int row) -> std::uint8_t& {
+    return clearance_[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(col)];
+  };
+  clearance_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), kMostClearance);
+  for (int row = 0; row < height_; ++row) {
+    for (int col = 0; col < width_; ++col) {
+      if (square_caster_stops(grid.at(col, row), stop)) at(col, row) = 0;
+    }
+  }
+  // Chebyshev distances: two raster passes over the 8 neighbours give them
+  // exactly. Cells off the grid count as clear (a ray leaving the grid is
+  // answered max_range before it could need them).
+  const auto relax = [&](int col, int row, int from_col, int from_row) {
+    if (from_col < 0 || from_row < 0 || from_col >= width_ || from_row >= height_) return;
+    std::uint8_t& cell = at(col, row);
+    cell = static_cast<std::uint8_t>(std::min<int>(cell, at(from_col, from_row) + 1));
+  };
+  for (int row = 0; row < height_; ++row) {
+    for (int col = 0; col < width_; ++col) {
+      relax(col, row, col - 1, row);
+      relax(col, row, col - 1, row - 1);
+      relax(col, row, col, row - 1);
+      relax(col, row, col + 1, row - 1);
+    }
+  }
+  for (int row = height_ - 1; row >= 0; --row) {
+    for (int col = width_ - 1; col >= 0; --col) {
+      relax(col, row, col + 1, row);
+      relax(col, row, col + 1, row + 1);
+      relax(col, row, col, row + 1);
+      relax(col, row, col - 1, row + 1);
+    }
+  }
+}
+
+SquareCaster::Start SquareCaster::start(Walk& walk, const Ray& ray) const {
+  Start begun{.walks = false, .col = 0, .row = 0, .range = ray.max_range};
+  if (width_ == 0 || !(ray.max_range > 0.0)) return begun;
+  const double dx = ray.direction.x(), dy = ray.direction.y();
+  if (!std::isfinite(dx) || !std::isfinite(dy)) return begun;
+  // Cell units, computed as cast_ray computes them.
+  walk.x = (ray.origin.x() - origin_.x()) / resolution_;
+  walk.y = (ray.origin.y() - origin_.y()) / resolution_;
+  if (!(walk.x >= 0.0 && walk.y >= 0.0 && walk.x < width_ && walk.y < height_)) return begun;
+  begun.col = static_cast<int>(walk.x);
+  begun.row = static_cast<int>(walk.y);
+  const bool moves_x = std::abs(dx) > kNoComponent, moves_y = std::abs(dy) > kNoComponent;
+  if (!moves_x && !moves_y) {  // no direction: the first cell is all it crosses
+    if (clearance_[static_cast<std::size_t>(begun.row) * static_cast<std::size_t>(width_) +
+                   static_cast<std::size_t>(begun.col)] == 0) {
+      begun.range = 0.0;
+    }
+    return begun;
+  }
+  walk.dx = dx;
+  walk.dy = dy;
+  walk.step_x = dx < 0.0 && moves_x ? -1 : 1;
+  walk.step_y = dy < 0.0 && moves_y ? -1 : 1;
+  walk.inverse_x = moves_x ? 1.0 / dx : kNeverInverse;
+  walk.inverse_y = moves_y ? 1.0 / dy : kNeverInverse;
+  walk.length = ray.max_range / resolution_;
+  begun.walks = true;
+  return begun;
+}
+
+// One step, written without branches on the map (arithmetic and selects,
+// never a path computed only when taken, so that the compiler has no reason
+// to branch): from the cell (col, row) with clearance k to the cell just
+// past the clear square of side 2k - 1 around it, where the ray leaves the
+// square. Returns kWalking, or kHit with the position left at the stopping
+// cell, or kGone when the ray passed max_range or left the grid.
+[[gnu::always_inline]] inline int SquareCaster::advance(const Walk& walk, int& col, int& row, double& along) const {
+  const int clearance = clearance_[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
+                                   static_cast<std::size_t>(col)];
+  const int hit = clearance == 0;
+  const int reach = clearance + hit;  // >= 1, so that the arithmetic below stays sane
+  // The square's far borders in the ray's direction, and where it crosses them.
+  const int jump_x = walk.step_x * reach, jump_y = walk.step_y * reach;
+  const double border_x = col + jump_x + (walk.step_x < 0);
+  const double border_y = row + jump_y + (walk.step_y < 0);
+  const double exit_x = (border_x - walk.x) * walk.inverse_x;
+  const double exit_y = (border_y - walk.y) * walk.inverse_y;
+  const int by_x = exit_x <= exit_y;  // x first at a tie, as cast_ray
+  const double leaves = std::min(exit_x, exit_y);
+  // The cell entered: past the border on the axis it leaves by, and where
+  // the ray is (kept within the square against rounding) on the other.
+  // Both clamps are computed; the bounds collapse to the one cell past the
+  // border on the axis left by.
+  const int cell_x = floor_cell(walk.x + leaves * walk.dx);
+  const int cell_y = floor_cell(walk.y + leaves * walk.dy);
+  const int by_y = 1 - by_x;
+  const int next_col = std::clamp(cell_x, col - reach + 1 + by_x * (jump_x + reach - 1),
+                                  col + reach - 1 + by_x * (jump_x - reach + 1));
+  const int next_row = std::clamp(cell_y, row - reach + 1 + by_y * (jump_y + reach - 1),
+                                  row + reach - 1 + by_y * (jump_y - reach + 1));
+  const int gone = !(leaves < walk.length) | (static_cast<unsigned>(next_col) >= static_cast<unsigned>(width_)) |
+                   (static_cast<unsigned>(next_row) >= static_cast<unsigned>(height_));
+  const int status = hit != 0 ? kHit : (gone != 0 ? kGone : kWalking);
+  const bool moves = status == kWalking;
+  col = moves ? next_col : col;
+  row = moves ? next_row : row;
+  along = moves ? leaves : along;
+  return status;
+}
+
+double SquareCaster::range(const Eigen::Vector2d& origin, double angle, double max_range) const {
+  return range(origin, Eigen::Vector2d(std::cos(angle), std::sin(angle)), max_range);
+}
+
+double SquareCaster::range(const Eigen::Vector2d& origin, const Eigen::Vector2d& direction, double max_range) const {
+  Walk walk;
+  const Start begun = start(walk, {origin, direction, max_range});
+  if (!begun.walks) return begun.range;
+  int col = begun.col, row = begun.row;
+  double along = 0.0;
+  for (;;) {
+    const int status = advance(walk, col, row, along);
+    if (status != kWalking) return status == kHit ? std::min(along * resolution_, max_range) : max_range;
+  }
+}
+
+void SquareCaster::ranges(std::span<const Ray> rays, std::span<double> ranges) const {
+  if (rays.size() != ranges.size()) {
+    throw std::invalid_argument("SquareCaster::ranges: " + std::to_string(rays.size()) + " rays but room for " +
+                                std::to_string(ranges.size()) + " ranges");
+  }
+  // Two walks side by side; a walk that ends takes the next ray. The rays
+  // answered without a walk are answered as they are taken.
+  std::size_t next = 0;
+  const auto take_next = [&](Walk& walk, std::size_t& index, int& col, int& row, double& along) {
+    while (next < rays.size()) {
+      index = next++;
+      const Start begun = start(walk, rays[index]);
+      if (begun.walks) {
+        col = begun.col;
+        row = begun.row;
+        along = 0.0;
+        return true;
+      }
+      ranges[index] = begun.range;
+    }
+    return false;
+  };
+  const auto finish = [&](int status, std::size_t index, double along) {
+    const double max_range = rays[index].max_range;
+    ranges[index] = status == kHit ? std::min(along * resolution_, max_range) : max_range;
+  };
+  Walk first, second;
+  std::size_t first_index = 0, second_index = 0;
+  int first_col = 0, first_row = 0, second_col = 0, second_row = 0;
+  double first_along = 0.0, second_along = 0.0;
+  bool first_walks = take_next(first, first_index, first_col, first_row, first_along);
+  bool second_walks = take_next(second, second_index, second_col, second_row, second_along);
+  while (first_walks && second_walks) {
+    const int first_status = advance(first, first_col, first_row, first_along);
+    const int second_status = advance(second, second_col, second_row, second_along);
+    if (first_status != kWalking) {
+      finish(first_status, first_index, first_along);
+      first_walks = take_next(first, first_index, first_col, first_row, first_along);
+    }
+    if (second_status != kWalking) {
+      finish(second_status, second_index, second_along);
+      second_walks = take_next(second, second_index, second_col, second_row, second_along);
+    }
+  }
+  if (!first_walks && !second_walks) return;
+  // One walk left, and no rays: finish it alone.
+  const Walk& last = first_walks ? first : second;
+  const std::size_t last_index = first_walks ? first_index : second_index;
+  int col = first_walks ? first_col : second_col, row = first_walks ? first_row : second_row;
+  double along = first_walks ? first_along : second_along;
+  for (;;) {
+    const int status = advance(last, col, row, along);
+    if (status != kWalking) return finish(status, last_index, along);
+  }
+}
+
+}  // namespace playerkit::grid

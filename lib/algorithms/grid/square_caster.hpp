@@ -1,0 +1,90 @@
+#pragma once
+// cast_ray's answers for a simulator: many rays from everywhere, each cast
+// once, through one unchanging map of walls.
+//
+// Per cell, the Chebyshev distance k (in cells, capped at 255) to the
+// nearest stopping cell: the square of 2k - 1 cells centred on the cell
+// holds none. A ray leaves that square in one step, at a crossing computed
+// exactly (no safety margin, unlike a Euclidean distance map's jumps), and
+// looks up the cell it enters; a cell with k = 0 stops it. Next to a wall
+// the square is the cell itself, so the walk is cast_ray's cell walk there,
+// and in open space it crosses many cells a step (about 6 steps a ray in a
+// cave at 3 cm where cast_ray walks 90 cells).
+//
+// Each step is a chain of dependent arithmetic and one memory read, with no
+// branch that depends on the map; ranges() walks two rays side by side so
+// that one's chain overlaps the other's.
+//
+// Every crossing is computed from the ray's origin, never accumulated, so a
+// ray's answer depends on the ray alone; it is cast_ray's up to rounding
+// (about 1e-12 m), except that where a ray passes within rounding of a cell
+// corner the two may take different neighbours.
+//
+// Compared with RangeCaster (a Euclidean distance map; for a particle
+// cloud's rays, which start near one another): the same byte a cell, a
+// build without a distance transform, and fewer, branch-free steps (in
+// bench/sim_bench's cave, 2-3x faster per ray on the shared machine).
+
+#include "algorithms/grid/occupancy_grid.hpp"
+#include "algorithms/grid/ray_cast.hpp"
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace playerkit::grid {
+
+class SquareCaster {
+ public:
+  SquareCaster() = default;
+  // Two passes over the cells (a 4000 x 4000 grid in well under a second);
+  // holds a byte a cell and does not refer to the grid afterwards.
+  SquareCaster(const OccupancyGrid& grid, RayStop stop);
+
+  // cast_ray(grid, origin, angle, max_range, stop) up to rounding: the
+  // distance to where the ray enters the first stopping cell, or max_range
+  // if it meets none within max_range or leaves the grid first (an origin
+  // outside the grid gives max_range; one inside a stopping cell gives 0).
+  [[nodiscard]] double range(const Eigen::Vector2d& origin, double angle, double max_range) const;
+  // The same along `direction`, a unit vector (cos angle, sin angle), for
+  // callers that turn one vector from ray to ray instead of calling trig.
+  [[nodiscard]] double range(const Eigen::Vector2d& origin, const Eigen::Vector2d& direction,
+                             double max_range) const;
+
+  struct Ray {
+    Eigen::Vector2d origin = Eigen::Vector2d::Zero();
+    Eigen::Vector2d direction = Eigen::Vector2d::UnitX();  // a unit vector
+    double max_range = 0.0;
+  };
+  // range(ray.origin, ray.direction, ray.max_range) for every ray, into
+  // `ranges` (as many as rays; throws std::invalid_argument otherwise):
+  // the same answers, bit for bit, in less time than one by one.
+  void ranges(std::span<const Ray> rays, std::span<double> ranges) const;
+
+  [[nodiscard]] RayStop stop() const { return stop_; }
+
+ private:
+  struct Walk;
+  struct Start {
+    bool walks = false;  // false: answered at once, with `range`
+    int col = 0, row = 0;
+    double range = 0.0;
+  };
+  static constexpr int kWalking = 0, kHit = 1, kGone = 2;
+  Start start(Walk& walk, const Ray& ray) const;
+  int advance(const Walk& walk, int& col, int& row, double& along) const;
+
+  // Per cell (row-major): 0 for a stopping cell, else the Chebyshev
+  // distance in cells to the nearest one, capped at 255.
+  std::vector<std::uint8_t> clearance_;
+  RayStop stop_ = RayStop::occupied_or_unknown;
+  int width_ = 0;
+  int height_ = 0;
+  double resolution_ = 0.0;
+  Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();
+};
+
+}  // namespace playerkit::grid
