@@ -8,6 +8,7 @@
 //   sim_bench goals           the three goal worlds only
 //   sim_bench growth          robots x beams in the cave
 //   sim_bench --seconds 30    simulate longer (default 20 s each, and 1 s of wall time at least)
+//   sim_bench --only NAME     only the worlds of this name (one-laser, cave-100, ..., for a profiler)
 //
 // Worlds are Stage 4 world text written here, on data/worlds' bitmaps (found
 // through PLAYERKIT_SOURCE_DIR, or the directory given with --worlds).
@@ -208,10 +209,13 @@ int main(int argc, char** argv) {
   double sim_seconds = 20.0;
   bool goals = true;
   bool growth = true;
+  std::string only;
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
     if (arg == "--seconds" && i + 1 < argc) {
       sim_seconds = std::atof(argv[++i]);
+    } else if (arg == "--only" && i + 1 < argc) {
+      only = argv[++i];
     } else if (arg == "--worlds" && i + 1 < argc) {
       worlds = argv[++i];
     } else if (arg == "goals") {
@@ -219,29 +223,32 @@ int main(int argc, char** argv) {
     } else if (arg == "growth") {
       goals = false;
     } else {
-      std::fprintf(stderr, "usage: sim_bench [goals|growth] [--seconds S] [--worlds DIR]\n");
+      std::fprintf(stderr, "usage: sim_bench [goals|growth] [--seconds S] [--only WORLD] [--worlds DIR]\n");
       return 2;
     }
   }
   print_header();
+  const auto measure = [&](const Scenario& scenario) {
+    if (only.empty() || scenario.name == only) print_row(scenario, run(scenario, worlds, sim_seconds));
+  };
   if (goals) {
     const std::vector<Scenario> targets{
         {"one-laser", "stage-cave.png", 16, 16, 1, 361, 0, 5000},
         {"cave-100", "stage-cave.png", 32, 32, 100, 180, 0, 50},
         {"hospital-1000", "stage-hospital_section.png", 140, 60, 1000, 0, 12, 10},
     };
-    for (const auto& scenario : targets) print_row(scenario, run(scenario, worlds, sim_seconds));
+    for (const auto& scenario : targets) measure(scenario);
   }
   if (growth) {
     for (const int robots : {1, 10, 100}) {
       for (const int beams : {45, 180, 361}) {
         const Scenario scenario{"cave-growth", "stage-cave.png", 32, 32, robots, beams, 0, 0};
-        print_row(scenario, run(scenario, worlds, sim_seconds));
+        measure(scenario);
       }
     }
     for (const int robots : {10, 100, 1000}) {
       const Scenario scenario{"hospital-growth", "stage-hospital_section.png", 140, 60, robots, 0, 12, 0};
-      print_row(scenario, run(scenario, worlds, sim_seconds));
+      measure(scenario);
     }
   }
   return 0;

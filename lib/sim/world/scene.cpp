@@ -24,37 +24,34 @@ IndexedBody indexed_body(const SceneModel& model) {
   return indexed;
 }
 
-// The RangeCaster answers rays that start on the map; one that starts off
-// it (robots may leave a Stage 4 map) is started where it enters the map.
-double wall_range_from_anywhere(const grid::OccupancyGrid& map, const grid::RangeCaster& walls,
-                                const Eigen::Vector2d& origin, double angle, double max_range) {
-  if (map.empty()) return max_range;
-  const Eigen::Vector2d low = map.origin();
-  const Eigen::Vector2d high = low + map.resolution() * Eigen::Vector2d(map.width(), map.height());
-  if ((origin.array() >= low.array()).all() && (origin.array() < high.array()).all()) {
-    return walls.range(origin, angle, max_range);
-  }
-  const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
-  double enter = 0.0;
-  double leave = max_range;
-  for (int axis = 0; axis < 2; ++axis) {
-    if (direction[axis] == 0.0) {
-      if (origin[axis] < low[axis] || origin[axis] >= high[axis]) return max_range;
-      continue;
-    }
-    double near_side = (low[axis] - origin[axis]) / direction[axis];
-    double far_side = (high[axis] - origin[axis]) / direction[axis];
-    if (near_side > far_side) std::swap(near_side, far_side);
-    enter = std::max(enter, near_side);
-    leave = std::min(leave, far_side);
-  }
-  if (!(enter < leave)) return max_range;
-  // A hair inside, so that rounding cannot leave the start off the map.
-  const Eigen::Vector2d hair = Eigen::Vector2d::Constant(1e-9 * (1.0 + high.cwiseAbs().maxCoeff()));
-  const Eigen::Vector2d start = (origin + enter * direction).cwiseMax(low + hair).cwiseMin(high - hair);
-  const double rest = walls.range(start, angle, max_range - enter);
-  return rest < max_range - enter ? enter + rest : max_range;
+// cast_all's broad phase: the bodies its rays may meet, in sectors of
+// directions around the rays' centre.
+constexpr int kDirectionSectors = 64;
+// Fewer rays than this (a sonar ring) cost less one by one through the
+// broad phase's cells than the filing does.
+constexpr std::size_t kFewestRaysToFile = 32;
+
+// A number in [0, 4) that grows with a direction's angle from +x,
+// counter-clockwise, without trigonometry.
+double pseudo_angle(const Eigen::Vector2d& direction) {
+  const double sum = std::abs(direction.x()) + std::abs(direction.y());
+  if (!(sum > 0.0)) return 0.0;
+  const double turn = direction.y() / sum;  // in [-1, 1]
+  if (direction.x() >= 0.0) return turn >= 0.0 ? turn : 4.0 + turn;
+  return 2.0 - turn;
 }
+
+int direction_sector(const Eigen::Vector2d& direction) {
+  const auto sector = static_cast<int>(pseudo_angle(direction) * (kDirectionSectors / 4));
+  return std::clamp(sector, 0, kDirectionSectors - 1);
+}
+
+// A body a batch of rays may meet, as its bounding circle.
+struct BatchBody {
+  ModelId id = kNoModel;
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  double reach = 0.0;  // bounding radius, a hair larger against rounding
+};
 
 }  // namespace
 
@@ -64,15 +61,203 @@ Scene::Scene(grid::OccupancyGrid map) : map_(std::move(map)), walls_(map_, grid:
   index_.cover(map_.origin(), map_.origin() + extent);
 }
 
+// The caster answers rays that start on the map; one that starts off it
+// (robots may leave a Stage 4 map) is started where it enters the map.
+Scene::WallWalk Scene::wall_walk(const Eigen::Vector2d& origin, const Eigen::Vector2d& direction,
+                                 double max_range) const {
+  WallWalk walk;
+  if (map_.empty()) return walk;
+  const Eigen::Vector2d low = map_.origin();
+  const Eigen::Vector2d high = low + map_.resolution() * Eigen::Vector2d(map_.width(), map_.height());
+  if ((origin.array() >= low.array()).all() && (origin.array() < high.array()).all()) {
+    return {.on_map = true, .ray = {origin, direction, max_range}, .offset = 0.0};
+  }
+  double enter = 0.0;
+  double leave = max_range;
+  for (int axis = 0; axis < 2; ++axis) {
+    if (direction[axis] == 0.0) {
+      if (origin[axis] < low[axis] || origin[axis] >= high[axis]) return walk;
+      continue;
+    }
+    double near_side = (low[axis] - origin[axis]) / direction[axis];
+    double far_side = (high[axis] - origin[axis]) / direction[axis];
+    if (near_side > far_side) std::swap(near_side, far_side);
+    enter = std::max(enter, near_side);
+    leave = std::min(leave, far_side);
+  }
+  if (!(enter < leave)) return walk;
+  // A hair inside, so that rounding cannot leave the start off the map.
+  const Eigen::Vector2d hair = Eigen::Vector2d::Constant(1e-9 * (1.0 + high.cwiseAbs().maxCoeff()));
+  const Eigen::Vector2d start = (origin + enter * direction).cwiseMax(low + hair).cwiseMin(high - hair);
+  return {.on_map = true, .ray = {start, direction, max_range - enter}, .offset = enter};
+}
+
 RayHit Scene::cast(const Eigen::Vector2d& origin, double angle, double max_range, ModelId ignore_root,
                    const ModelFilter& stops) const {
-  RayHit hit{.range = max_range};
-  if (!(max_range > 0.0) || !std::isfinite(angle) || !origin.allFinite()) return hit;
-  const double wall = wall_range_from_anywhere(map_, walls_, origin, angle, max_range);
-  if (wall < max_range) hit = {.range = wall, .model = kNoModel, .wall = true};
-  if (!index_.has_solid_bodies()) return hit;
+  if (!std::isfinite(angle)) return {.range = max_range};
+  return cast(origin, Eigen::Vector2d(std::cos(angle), std::sin(angle)), max_range, ignore_root, stops);
+}
 
-  const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
+RayHit Scene::cast(const Eigen::Vector2d& origin, const Eigen::Vector2d& direction, double max_range,
+                   ModelId ignore_root, const ModelFilter& stops) const {
+  RayHit hit{.range = max_range};
+  if (!(max_range > 0.0) || !direction.allFinite() || !origin.allFinite()) return hit;
+  if (const WallWalk walk = wall_walk(origin, direction, max_range); walk.on_map) {
+    const double rest = walls_.range(walk.ray.origin, walk.ray.direction, walk.ray.max_range);
+    if (rest < walk.ray.max_range) hit = {.range = walk.offset + rest, .model = kNoModel, .wall = true};
+  }
+  nearest_body(origin, direction, ignore_root, stops, hit);
+  return hit;
+}
+
+void Scene::cast_all(std::span<const SceneRay> rays, double max_range, ModelId ignore_root,
+                     std::span<RayHit> hits) const {
+  if (rays.size() != hits.size()) {
+    throw std::invalid_argument("Scene::cast_all: " + std::to_string(rays.size()) + " rays but room for " +
+                                std::to_string(hits.size()) + " hits");
+  }
+  // Reused from call to call (no allocation once grown); one set a thread.
+  thread_local std::vector<grid::SquareCaster::Ray> walked;
+  thread_local std::vector<std::size_t> walked_ray;  // which of `rays` each walked ray is
+  thread_local std::vector<double> offsets;
+  thread_local std::vector<double> walls;
+  walked.clear();
+  walked_ray.clear();
+  offsets.clear();
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    hits[i] = {.range = max_range};
+    const SceneRay& ray = rays[i];
+    if (!(max_range > 0.0) || !ray.direction.allFinite() || !ray.origin.allFinite()) continue;
+    if (const WallWalk walk = wall_walk(ray.origin, ray.direction, max_range); walk.on_map) {
+      walked.push_back(walk.ray);
+      walked_ray.push_back(i);
+      offsets.push_back(walk.offset);
+    }
+  }
+  walls.resize(walked.size());
+  walls_.ranges(walked, walls);
+  for (std::size_t k = 0; k < walked.size(); ++k) {
+    if (walls[k] < walked[k].max_range) hits[walked_ray[k]] = {.range = offsets[k] + walls[k], .model = kNoModel, .wall = true};
+  }
+  if (!index_.has_solid_bodies() || !(max_range > 0.0)) return;
+  if (rays.size() >= kFewestRaysToFile) {
+    nearest_bodies(rays, max_range, ignore_root, hits);
+    return;
+  }
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    if (rays[i].direction.allFinite() && rays[i].origin.allFinite()) {
+      nearest_body(rays[i].origin, rays[i].direction, ignore_root, nullptr, hits[i]);
+    }
+  }
+}
+
+// The rays' bodies at once: every body within reach of any ray is found
+// once, and filed under the sectors of directions (seen from the rays'
+// centre) in which a ray could meet it, so that a ray tests only the few
+// bodies of its sector. A sensor's rays fan out from one place (a laser)
+// or a few close places (a sonar ring), so each sector holds few bodies.
+void Scene::nearest_bodies(std::span<const SceneRay> rays, double max_range, ModelId ignore_root,
+                           std::span<RayHit> hits) const {
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  std::size_t counted = 0;
+  for (const SceneRay& ray : rays) {
+    if (!ray.origin.allFinite() || !ray.direction.allFinite()) continue;
+    centre += ray.origin;
+    ++counted;
+  }
+  if (counted == 0) return;
+  centre /= static_cast<double>(counted);
+  double spread = 0.0;
+  for (const SceneRay& ray : rays) {
+    if (ray.origin.allFinite() && ray.direction.allFinite()) spread = std::max(spread, (ray.origin - centre).norm());
+  }
+
+  thread_local std::vector<ModelId> near;
+  near.clear();
+  index_.near(centre, max_range + spread, [&](ModelId id) {
+    const IndexedBody& body = index_.body(id);
+    if (body.solid && body.ranger_visible && body.root != ignore_root) near.push_back(id);
+  });
+  if (near.empty()) return;
+  std::sort(near.begin(), near.end());
+  near.erase(std::unique(near.begin(), near.end()), near.end());
+
+  // Sectors as one array: bodies of sector k are filed[first[k], first[k + 1]).
+  thread_local std::vector<BatchBody> bodies;
+  thread_local std::vector<std::pair<int, int>> spans;  // each body's sectors, first to last counter-clockwise
+  thread_local std::vector<int> first;
+  thread_local std::vector<int> filed;
+  bodies.clear();
+  spans.clear();
+  first.assign(kDirectionSectors + 1, 0);
+  const auto each_sector = [](std::pair<int, int> span, auto&& visit) {
+    for (int sector = span.first;; sector = (sector + 1) % kDirectionSectors) {
+      visit(sector);
+      if (sector == span.second) break;
+    }
+  };
+  for (const ModelId id : near) {
+    const PlacedBody& shape = index_.body(id).shape;
+    const double reach = shape.bounding_radius * (1.0 + 1e-9) + 1e-12;
+    bodies.push_back({id, shape.centre, reach});
+    // The directions from `centre` along which a line comes within
+    // reach + spread of the body's centre: any ray of the batch that meets
+    // the body points along one of them.
+    const Eigen::Vector2d to_body = shape.centre - centre;
+    const double distance = to_body.norm();
+    const double widened = reach + spread;
+    std::pair<int, int> span{0, kDirectionSectors - 1};
+    if (distance > widened * (1.0 + 1e-9)) {
+      const double sine = widened / distance, cosine = std::sqrt(1.0 - sine * sine);
+      const Eigen::Vector2d toward = to_body / distance;
+      const Eigen::Vector2d left(cosine * toward.x() - sine * toward.y(), sine * toward.x() + cosine * toward.y());
+      const Eigen::Vector2d right(cosine * toward.x() + sine * toward.y(), -sine * toward.x() + cosine * toward.y());
+      // One sector more each side: rounding in the tangents and sectors.
+      span = {(direction_sector(right) + kDirectionSectors - 1) % kDirectionSectors,
+              (direction_sector(left) + 1) % kDirectionSectors};
+      const int covered = (span.second - span.first + kDirectionSectors) % kDirectionSectors + 1;
+      if (covered >= kDirectionSectors - 1) span = {0, kDirectionSectors - 1};
+    }
+    spans.push_back(span);
+    each_sector(span, [&](int sector) { ++first[static_cast<std::size_t>(sector) + 1]; });
+  }
+  for (int sector = 0; sector < kDirectionSectors; ++sector) {
+    first[static_cast<std::size_t>(sector) + 1] += first[static_cast<std::size_t>(sector)];
+  }
+  filed.resize(static_cast<std::size_t>(first.back()));
+  {
+    thread_local std::vector<int> fill;
+    fill.assign(first.begin(), first.end() - 1);
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      each_sector(spans[b], [&](int sector) {
+        filed[static_cast<std::size_t>(fill[static_cast<std::size_t>(sector)]++)] = static_cast<int>(b);
+      });
+    }
+  }
+
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const SceneRay& ray = rays[i];
+    if (!ray.origin.allFinite() || !ray.direction.allFinite()) continue;
+    RayHit& hit = hits[i];
+    const auto sector = static_cast<std::size_t>(direction_sector(ray.direction));
+    for (int k = first[sector]; k < first[sector + 1]; ++k) {
+      const BatchBody& body = bodies[static_cast<std::size_t>(filed[static_cast<std::size_t>(k)])];
+      // The bounding circle rejects most: off the ray, behind it, or
+      // beyond what it already met.
+      const double to_x = body.centre.x() - ray.origin.x(), to_y = body.centre.y() - ray.origin.y();
+      const double along = to_x * ray.direction.x() + to_y * ray.direction.y();
+      if (along + body.reach < 0.0 || along - body.reach >= hit.range) continue;
+      if (std::abs(to_x * ray.direction.y() - to_y * ray.direction.x()) > body.reach) continue;
+      // Walls win ties, as in cast().
+      const double entry = ray_entry(index_.body(body.id).shape, ray.origin, ray.direction);
+      if (entry < hit.range) hit = {.range = entry, .model = body.id, .wall = false};
+    }
+  }
+}
+
+void Scene::nearest_body(const Eigen::Vector2d& origin, const Eigen::Vector2d& direction, ModelId ignore_root,
+                         const ModelFilter& stops, RayHit& hit) const {
+  if (!index_.has_solid_bodies()) return;
   const bool default_stops = !stops;
   const auto try_body = [&](ModelId id) {
     // Walls win ties; the filter runs only for a body that would be nearer.
@@ -99,7 +284,6 @@ RayHit Scene::cast(const Eigen::Vector2d& origin, double angle, double max_range
     // Cells further on lie beyond leaves_cell: nothing there can be nearer.
     return hit.range > leaves_cell;
   });
-  return hit;
 }
 
 std::vector<ModelId> Scene::models_near(const Eigen::Vector2d& centre, double radius) const {

@@ -16,7 +16,7 @@
 
 #include "algorithms/geometry/pose2.hpp"
 #include "algorithms/grid/occupancy_grid.hpp"
-#include "algorithms/grid/range_caster.hpp"
+#include "algorithms/grid/square_caster.hpp"
 #include "sim/world/body_index.hpp"
 #include "sim/world/model_spec.hpp"
 
@@ -43,6 +43,12 @@ struct RayHit {
 // Which models a ray may stop on, besides walls (which always stop it).
 using ModelFilter = std::function<bool(const SceneModel&)>;
 
+// One ray of a sensor's many: `direction` is a unit vector.
+struct SceneRay {
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();
+  Eigen::Vector2d direction = Eigen::Vector2d::UnitX();
+};
+
 class Scene {
  public:
   Scene() = default;
@@ -57,6 +63,16 @@ class Scene {
   // `stops` says so (nullptr: those with a body and ranger return >= 0).
   [[nodiscard]] RayHit cast(const Eigen::Vector2d& origin, double angle, double max_range,
                             ModelId ignore_root, const ModelFilter& stops = nullptr) const;
+  // The same along `direction`, the unit vector (cos angle, sin angle): a
+  // sensor that turns one vector from ray to ray needs no trigonometry.
+  [[nodiscard]] RayHit cast(const Eigen::Vector2d& origin, const Eigen::Vector2d& direction, double max_range,
+                            ModelId ignore_root, const ModelFilter& stops = nullptr) const;
+  // cast(ray.origin, ray.direction, max_range, ignore_root) for every ray
+  // (bodies stop them by the default rule), into `hits` (as many as rays;
+  // std::invalid_argument otherwise). The same answers, in less time than
+  // one by one: the walls of all rays are walked together.
+  void cast_all(std::span<const SceneRay> rays, double max_range, ModelId ignore_root,
+                std::span<RayHit> hits) const;
 
   // Every model, indexed by id.
   [[nodiscard]] std::span<const SceneModel> models() const { return models_; }
@@ -77,8 +93,26 @@ class Scene {
   void set_root(ModelId id, ModelId root);
 
  private:
+  // The walk through the walls of a ray that may start off the map, as
+  // the caster's ray (empty when it never meets the map) and the distance
+  // to add to its answer.
+  struct WallWalk {
+    bool on_map = false;
+    grid::SquareCaster::Ray ray;
+    double offset = 0.0;
+  };
+  [[nodiscard]] WallWalk wall_walk(const Eigen::Vector2d& origin, const Eigen::Vector2d& direction,
+                                   double max_range) const;
+  // cast_all's bodies: lowers each hit to the nearest body its ray enters
+  // before it.
+  void nearest_bodies(std::span<const SceneRay> rays, double max_range, ModelId ignore_root,
+                      std::span<RayHit> hits) const;
+  // Lowers `hit` to the nearest body the ray enters before it.
+  void nearest_body(const Eigen::Vector2d& origin, const Eigen::Vector2d& direction, ModelId ignore_root,
+                    const ModelFilter& stops, RayHit& hit) const;
+
   grid::OccupancyGrid map_;
-  grid::RangeCaster walls_;
+  grid::SquareCaster walls_;
   std::vector<SceneModel> models_;
   BodyIndex index_;  // the broad phase of cast() and models_near()
 };

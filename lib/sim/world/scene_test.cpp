@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 namespace playerkit::sim::scene_test {
@@ -186,6 +187,68 @@ TEST(Scene, CastMatchesAnIndependentRayMarchOverRandomRays) {
   EXPECT_GT(tally.walls, 30);
   EXPECT_GT(tally.bodies, 30);
   EXPECT_GT(tally.nothing, 10);
+}
+
+// A sensor's rays cast together answer, bit for bit, what each cast alone
+// answers (which the march above checks), from on and off the map.
+TEST(Scene, CastAllAnswersWhatCastAnswersForEachRay) {
+  std::mt19937 random(314);
+  const RandomScene world = random_scene(random);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int walls = 0, bodies = 0, off_map = 0;
+  for (const ModelId ignore : {kNoModel, ModelId{0}}) {
+    std::vector<SceneRay> rays;
+    std::vector<double> angles;
+    for (int ray = 0; ray < 300; ++ray) {
+      const Eigen::Vector2d origin{-4.0 + 8.0 * unit(random), -4.0 + 8.0 * unit(random)};
+      const double angle = -std::numbers::pi + 2.0 * std::numbers::pi * unit(random);
+      rays.push_back({origin, {std::cos(angle), std::sin(angle)}});
+      angles.push_back(angle);
+      off_map += std::abs(origin.x()) > 2.5 || std::abs(origin.y()) > 2.5;
+    }
+    std::vector<RayHit> hits(rays.size());
+    world.scene.cast_all(rays, 4.0, ignore, hits);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      const RayHit alone = world.scene.cast(rays[i].origin, angles[i], 4.0, ignore);
+      const RayHit by_direction = world.scene.cast(rays[i].origin, rays[i].direction, 4.0, ignore);
+      EXPECT_EQ(hits[i].range, alone.range) << i;
+      EXPECT_EQ(hits[i].model, alone.model) << i;
+      EXPECT_EQ(hits[i].wall, alone.wall) << i;
+      EXPECT_EQ(by_direction.range, alone.range) << i;
+      EXPECT_EQ(by_direction.model, alone.model) << i;
+      walls += alone.wall;
+      bodies += alone.model != kNoModel;
+    }
+  }
+  EXPECT_GT(walls, 100);
+  EXPECT_GT(bodies, 100);
+  EXPECT_GT(off_map, 100);
+  // A laser's fan from one point and a sonar's ring of close points, as
+  // sensors cast them: bodies are then filed by direction, and each ray
+  // looks only at those that may lie its way.
+  int fan_bodies = 0;
+  for (int place = 0; place < 40; ++place) {
+    const Eigen::Vector2d centre{-3.5 + 7.0 * unit(random), -3.5 + 7.0 * unit(random)};
+    const double ring = place % 2 == 0 ? 0.0 : 0.2;
+    std::vector<SceneRay> rays;
+    const int count = place % 4 == 3 ? 12 : 360;  // a few rays are cast one by one inside
+    for (int ray = 0; ray < count; ++ray) {
+      const double angle = 2.0 * std::numbers::pi * ray / count + 0.1 * place;
+      const Eigen::Vector2d direction{std::cos(angle), std::sin(angle)};
+      rays.push_back({centre + ring * direction, direction});
+    }
+    std::vector<RayHit> hits(rays.size());
+    world.scene.cast_all(rays, 3.0, kNoModel, hits);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      const RayHit alone = world.scene.cast(rays[i].origin, rays[i].direction, 3.0, kNoModel);
+      EXPECT_EQ(hits[i].range, alone.range) << place << " " << i;
+      EXPECT_EQ(hits[i].model, alone.model) << place << " " << i;
+      fan_bodies += alone.model != kNoModel;
+    }
+  }
+  EXPECT_GT(fan_bodies, 1000);
+  std::vector<RayHit> too_few(1);
+  EXPECT_THROW(world.scene.cast_all(std::vector<SceneRay>(2), 4.0, kNoModel, too_few), std::invalid_argument);
 }
 
 TEST(Scene, AFilterDecidesWhichBodiesStopARay) {

@@ -1,20 +1,37 @@
 #include "sim/world/sonar.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 
 namespace playerkit::sim {
 
 SonarScan scan_sonar(const Scene& scene, const SonarSpec& spec, const geometry::Pose2& model_pose, ModelId own_root,
                      NoiseDraws& noise) {
   SonarScan scan;
-  scan.ranges.reserve(spec.transducers.size());
-  const ModelFilter rangers_see;  // empty: the scene's own test (a body, ranger return >= 0)
-  for (const geometry::Pose2& transducer : spec.transducers) {
+  const std::size_t count = spec.transducers.size();
+  thread_local std::vector<SceneRay> rays;
+  thread_local std::vector<RayHit> hits;
+  rays.resize(count);
+  hits.resize(count);
+  // Each transducer's ray: the model's pose composed with the transducer's,
+  // with the model's turn computed once.
+  const double c = std::cos(model_pose.yaw), s = std::sin(model_pose.yaw);
+  for (std::size_t i = 0; i < count; ++i) {
+    const geometry::Pose2& transducer = spec.transducers[i];
+    const Eigen::Vector2d heading(std::cos(transducer.yaw), std::sin(transducer.yaw));
+    rays[i].origin = {model_pose.x + c * transducer.x - s * transducer.y,
+                      model_pose.y + s * transducer.x + c * transducer.y};
+    rays[i].direction = {c * heading.x() - s * heading.y(), s * heading.x() + c * heading.y()};
+  }
+  scene.cast_all(rays, spec.range_max, own_root, hits);
+
+  scan.ranges.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) {
     // Drawn for every transducer, hit or not, so each one's noise is fixed
     // by its place in the ring alone.
     const double gaussian = noise.gaussian(spec.noise_sd);
-    const geometry::Pose2 ray = model_pose.compose(transducer);
-    double range = scene.cast(ray.translation(), ray.yaw, spec.range_max, own_root, rangers_see).range;
+    double range = hits[i].range;
     if (range < spec.range_max) range += gaussian;
     scan.ranges.push_back(std::min(std::max(range, spec.range_min), spec.range_max));
   }
