@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <exception>
+#include <stdexcept>
 
 #include "config/config_file.hpp"
 #include "config/errors.hpp"
 #include "core/instantiate.hpp"
 #include "core/plugin.hpp"
 #include "daemon/check.hpp"
+#include "daemon/simulation.hpp"
+#include "sim/worldfile/worldfile_error.hpp"
+#include "text/printable.hpp"
 #include "server/server.hpp"
 
 namespace playerkit::daemon {
@@ -50,17 +54,27 @@ void Daemon::load() {
   };
   try {
     bind_default_port();
-    const std::vector<std::uint16_t> ports = create_devices();
+    std::vector<std::uint16_t> ports;
+    if (options_.simulation) ports = create_world_devices();
+    if (options_.has_configuration()) {
+      const std::vector<std::uint16_t> configured = create_devices();
+      ports.insert(ports.end(), configured.begin(), configured.end());
+    }
     warn_if_nothing_replayed();
-    check_served(devices_, options_.config_path);
+    check_served(devices_, options_.served_name());
+    for (const std::string& warning : device_list_warnings(devices_)) logger_.warning(warning);
     if (std::find(ports.begin(), ports.end(), 0) != ports.end()) {
       fail(ServeResult::bad_configuration, options_.config_path + ": a robot section with port 0; only -p 0 picks a free port");
     }
     bind_ports(ports);
   } catch (const config::ConfigError& e) {
     fail(ServeResult::bad_configuration, e.what());
+  } catch (const sim::worldfile::WorldFileError& e) {
+    fail(ServeResult::bad_configuration, e.what());
   } catch (const server::ServerError& e) {
     fail(ServeResult::failed, e.what());
+  } catch (const std::runtime_error& e) {  // a world that cannot be served
+    fail(ServeResult::bad_configuration, options_.served_name() + ": " + text::printable(e.what()));
   }
 }
 
@@ -72,6 +86,18 @@ void Daemon::bind_default_port() {
     default_port_ = server_->listen(0);
     bound_ports_.push_back(default_port_);
   }
+}
+
+std::vector<std::uint16_t> Daemon::create_world_devices() {
+  const ServedWorld world = load_served_world(*options_.simulation, default_port_);
+  for (const std::string& warning : world.warnings) logger_.warning(warning);
+  register_world_drivers(registry_, world);
+  const auto config = world_device_configuration(world, registry_, default_port_);
+  // Every simulated device claims clock_ with the simulation's time.
+  core::instantiate_devices(config, registry_, devices_, clock_, logger_);
+  core::check_devices(config, devices_);
+  logger_.info("simulating " + world.summary);
+  return config.ports();
 }
 
 std::vector<std::uint16_t> Daemon::create_devices() {
@@ -101,7 +127,7 @@ void Daemon::warn_if_nothing_replayed() {
   const auto served = devices_.all();
   if (std::none_of(served.begin(), served.end(),
                    [](const core::Device* device) { return device->info().driver_name == "readlog"; })) {
-    logger_.warning("-r " + *options_.readlog + ": no device of " + options_.config_path +
+    logger_.warning("-r " + *options_.readlog + ": no device of " + options_.served_name() +
                     " has driver \"readlog\"; nothing is replayed");
   }
 }

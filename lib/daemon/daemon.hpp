@@ -4,7 +4,7 @@
 // traces its bytes); serve() is these steps run until a signal.
 //
 //   daemon::Daemon daemon(options);      // registry: drivers loaded, server made
-//   daemon.load();                       // devices from the configuration, ports bound
+//   daemon.load();                       // devices from the world and the configuration, ports bound
 //   daemon.start();                      // prepare, alwayson devices up
 //   std::jthread serving([&] { daemon.run(); });
 //   ... daemon.devices() ..., daemon.stop();
@@ -45,8 +45,8 @@ class Daemon {
   Daemon(const Daemon&) = delete;
   Daemon& operator=(const Daemon&) = delete;
 
-  // Reads the configuration, creates the devices and binds every port.
-  // Throws DaemonError.
+  // Loads the -s world, reads the configuration, creates the devices and
+  // binds every port. Throws DaemonError.
   void load();
   // prepare() on every device, then the alwayson ones. Throws DaemonError
   // (the devices are shut down again).
@@ -69,7 +69,9 @@ class Daemon {
  private:
   // The steps of load(), in order. Each throws what it meets.
   void bind_default_port();
-  // The configuration's devices, checked; the ports its robot sections name.
+  // -s: the world's devices (simulation.hpp); the ports they are served on.
+  std::vector<std::uint16_t> create_world_devices();
+  // The configuration's devices; the ports its robot sections name.
   std::vector<std::uint16_t> create_devices();
   void bind_ports(const std::vector<std::uint16_t>& ports);
   void warn_if_nothing_replayed();

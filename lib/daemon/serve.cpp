@@ -7,6 +7,11 @@
 
 namespace playerkit::daemon {
 
+std::string ServeOptions::served_name() const {
+  if (has_configuration() || !simulation) return config_path;
+  return simulation->world;
+}
+
 core::DriverRegistry load_drivers(const std::vector<std::string>& plugins, core::Logger& logger) {
   core::DriverRegistry registry;
   drivers::register_builtin_drivers(registry);

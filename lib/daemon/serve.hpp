@@ -13,8 +13,18 @@
 
 namespace playerkit::daemon {
 
+// -s WORLD: serve every device of a simulated world (lib/drivers/sim).
+struct SimulationOptions {
+  std::string world;                // a Stage world file
+  double speedup = 1.0;             // × real time; 0: as fast as possible
+  std::uint64_t seed = 0;           // noise and odometry error draws
+  std::optional<double> sim_time;   // stop stepping after this many simulated seconds
+  bool paused = false;              // start paused (the simulation device runs it)
+};
+
 struct ServeOptions {
   std::string program_name = "player-serve";  // prefixes every log line
+  // Empty with a simulation and no configuration file.
   std::string config_path;
   // When set, the configuration itself (config_path names it in messages).
   std::optional<std::string> config_text;
@@ -30,6 +40,12 @@ struct ServeOptions {
   std::size_t readlog_data_queue = 0;
   std::optional<double> readlog_duration;
   bool readlog_burst = false;
+  std::optional<SimulationOptions> simulation;
+
+  // A configuration file (or text) to read besides the world.
+  [[nodiscard]] bool has_configuration() const { return config_text.has_value() || !config_path.empty(); }
+  // What is served, for messages: the configuration file, else the world.
+  [[nodiscard]] std::string served_name() const;
 };
 
 // The built-in drivers plus those of the plugins. Throws core::PluginError.

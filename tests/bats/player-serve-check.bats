@@ -52,10 +52,10 @@ write_replay_log() {
   [[ "$output" == *"nope.cfg"* ]]
 }
 
-@test "no configuration file is a usage error, exit 2" {
+@test "no configuration file and no world is a usage error, exit 2" {
   run "$player_serve"
   [ "$status" -eq 2 ]
-  [[ "$output" == *"CONFIG is required"* ]]
+  [[ "$output" == *"nothing to serve: give a configuration file, -s WORLD, or both"* ]]
 }
 
 @test "--help shows examples and exit codes; --version names the protocol" {

@@ -66,10 +66,10 @@ teardown() {
   [ "$status" -eq 2 ]
 }
 
-@test "Stage and Gazebo flags say they are not available" {
-  run "$player_serve" -s /tmp "$cfg"
+@test "Gazebo's flag says it is not available; -s takes a world file, not 1.5's Stage directory" {
+  run "$player_serve" -s /tmp -p 0 --bind 127.0.0.1 "$cfg"
   [ "$status" -eq 2 ]
-  [[ "$output" == *"Stage (-s) is not available"* ]]
+  [[ "$output" == *"/tmp: cannot read the world file: it is a directory"* ]]
   run "$player_serve" -g 0 "$cfg"
   [ "$status" -eq 2 ]
   [[ "$output" == *"Gazebo (-g) is not available"* ]]

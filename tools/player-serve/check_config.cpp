@@ -7,6 +7,7 @@
 #include "config/errors.hpp"
 #include "core/plugin.hpp"
 #include "daemon/check.hpp"
+#include "sim/worldfile/worldfile_error.hpp"
 #include "exit_status.hpp"
 #include "text/printable.hpp"
 
@@ -30,40 +31,46 @@ std::string format_property(const config::Property& property) {
   return text;
 }
 
+void list_devices(const config::ConfigFile& config, std::ostream& out) {
+  const auto& devices = config.devices();
+  out << text::printable(config.filename()) << ": " << devices.size() << (devices.size() == 1 ? " device" : " devices");
+  out << ", served on port";
+  const auto ports = config.ports();
+  if (ports.size() > 1) out << "s";
+  for (std::size_t i = 0; i < ports.size(); ++i) out << (i ? ", " : " ") << ports[i];
+  out << "\n";
+  for (const auto& device : devices) {
+    const std::string name = device.interface_name + ":" + std::to_string(device.address.index);
+    out << "  " << std::left << std::setw(14) << name << " driver " << device.driver;
+    if (ports.size() > 1) out << ", port " << device.port;
+    if (!device.robot_name.empty()) out << ", robot " << device.robot_name;
+    if (device.alwayson) out << ", always on";
+    out << "\n";
+    for (const auto& property : config.section(device.section).properties()) {
+      if (property.name == "driver" || property.name == "alwayson") continue;
+      out << "      " << text::printable(format_property(property)) << "\n";
+    }
+  }
+}
+
 }  // namespace
 
 int check_config(const daemon::ServeOptions& options, std::ostream& out, std::ostream& err) {
   try {
     const auto checked = daemon::check_configuration(options);
     for (const auto& warning : checked.warnings) err << warning << "\n";
-    const auto& config = checked.config;
-    const auto& devices = config.devices();
-    out << text::printable(options.config_path) << ": " << devices.size() << (devices.size() == 1 ? " device" : " devices");
-    out << ", served on port";
-    const auto ports = config.ports();
-    if (ports.size() > 1) out << "s";
-    for (std::size_t i = 0; i < ports.size(); ++i) out << (i ? ", " : " ") << ports[i];
-    out << "\n";
-    for (const auto& device : devices) {
-      const std::string name = device.interface_name + ":" + std::to_string(device.address.index);
-      out << "  " << std::left << std::setw(14) << name << " driver " << device.driver;
-      if (ports.size() > 1) out << ", port " << device.port;
-      if (!device.robot_name.empty()) out << ", robot " << device.robot_name;
-      if (device.alwayson) out << ", always on";
-      out << "\n";
-      for (const auto& property : config.section(device.section).properties()) {
-        if (property.name == "driver" || property.name == "alwayson") continue;
-        out << "      " << text::printable(format_property(property)) << "\n";
-      }
-    }
+    for (const auto& config : checked.configs) list_devices(config, out);
     return tools::kExitOk;
   } catch (const config::ConfigError& e) {
     err << e.what() << "\n";
     return tools::kExitUsage;
+  } catch (const sim::worldfile::WorldFileError& e) {
+    err << e.what() << "\n";  // file:line:col, escaped already
+    return tools::kExitUsage;
   } catch (const core::PluginError& e) {
     err << options.program_name << ": " << text::printable(e.what()) << "\n";
     return tools::kExitFailure;
-  } catch (const std::runtime_error& e) {  // the -r log
+  } catch (const std::runtime_error& e) {  // the -r log, a world that cannot be served
     err << options.program_name << ": " << text::printable(e.what()) << "\n";
     return tools::kExitUsage;
   }

@@ -30,33 +30,54 @@ constexpr const char* kExamples = R"(Examples:
   player-serve -r run.log -f 2 replay.cfg   replay run.log at twice its speed to the
                                        readlog devices of replay.cfg, e.g.
                                        position:0 ( driver "readlog" )
+  player-serve -s data/worlds/simple.world   simulate a Stage world and serve every device
+                                       in it (each robot on its port; without a port on -p),
+                                       stamped with simulation time, plus simulation:0
+  player-serve -s cave.world -p 0 --speedup 0 --sim-time 60
+                                       one minute of simulation as fast as it goes, then
+                                       the world stands still and is served as it is
+  player-serve -s cave.world --paused  start paused; player-send simulation:0 cmd cmd=2
+                                       steps once, cmd=0 runs, cmd=1 pauses
+  player-serve -s cave.world gz.cfg    also the devices of gz.cfg on that world, e.g.
+                                       position:1 ( driver "gz_position" gz_id "robot1" )
+                                       or writelog and amcl on the simulated devices
+  player-serve --check -s cave.world   read the world and list what it would serve
 
 Signals: SIGINT, SIGTERM and SIGHUP stop accepting clients, shut every device
 down and exit 0.
 Exit status: 0 success, 1 runtime error (port in use, plugin or device set-up
-failed), 2 usage error or invalid configuration.)";
+failed), 2 usage error, invalid configuration or invalid world file (reported
+as file:line:col).)";
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"player-serve: serve the devices of a Player configuration file over TCP,\n"
-               "wire-compatible with Player 1.5 clients."};
+  CLI::App app{"player-serve: serve the devices of a Player configuration file, or of a simulated\n"
+               "Stage world, over TCP, wire-compatible with Player 1.5 clients."};
   app.footer(kExamples);
   app.set_version_flag("--version", std::string("player-serve (playerkit) ") + PLAYERKIT_VERSION +
                                         ", Player protocol " + PLAYERKIT_PLAYER_VERSION);
 
   playerkit::serve::ServeCommandLine command_line;
-  app.add_option("CONFIG", command_line.config_path, "configuration file (.cfg)")->required();
+  app.add_option("CONFIG", command_line.config_path, "configuration file (.cfg); optional with -s");
   app.add_option("-p,--port", command_line.port, "TCP port for devices outside a robot section")
       ->capture_default_str();
   app.add_option("-k,--key", command_line.key, "require clients to authenticate with this key (31 characters used)");
-  app.add_option("-d,--plugin", command_line.plugins, "load drivers from this shared object (repeatable)");
+  // One file per -d: CONFIG is optional (with -s), so a greedy -d would swallow it.
+  app.add_option("-d,--plugin", command_line.plugins, "load drivers from this shared object (repeatable)")
+      ->allow_extra_args(false);
   app.add_option("--bind", command_line.bind_address, "address to listen on")->capture_default_str();
   app.add_option("-r,--readlog", command_line.readlog,
                  "replay this log file: the devices with driver readlog serve its data");
   app.add_option("-f,--readlogspeed", command_line.readlog_speed, "replay speed factor for -r (2 = twice as fast)");
   app.add_option("-t,--transport", command_line.transport, "tcp (udp is not available)")->capture_default_str();
-  app.add_option("-s", command_line.stage_directory, "Stage devices (not available in playerkit)");
+  app.add_option("-s,--world", command_line.world,
+                 "simulate this Stage world file (1.3 or 3/4) and serve every device in it");
+  app.add_option("--speedup", command_line.speedup, "with -s: times real time; 0 = as fast as possible (default 1)");
+  app.add_option("--seed", command_line.seed, "with -s: seed of sensor noise and odometry errors (default 0)");
+  app.add_option("--sim-time", command_line.sim_time,
+                 "with -s: stop the simulation after this many simulated seconds (serving goes on)");
+  app.add_flag("--paused", command_line.paused, "with -s: start paused (the simulation device runs it)");
   app.add_option("-g", command_line.gazebo_id, "Gazebo server (not available in playerkit)");
   app.add_flag("-q,--quiet", command_line.quiet, "errors only");
   app.add_flag("-v,--verbose", command_line.verbose, "also debug messages (client traffic problems, set-up)");

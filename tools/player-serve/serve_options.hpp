@@ -5,6 +5,7 @@
 // rules are unit-tested (serve_options_test.cpp).
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,7 @@ using tools::UsageError;
 
 // The flags as typed; empty strings mean "not given".
 struct ServeCommandLine {
-  std::string config_path;
+  std::string config_path;  // may be empty with -s
   std::uint16_t port = daemon::ServeOptions().port;
   std::string key;
   std::vector<std::string> plugins;
@@ -25,7 +26,11 @@ struct ServeCommandLine {
   std::string readlog;
   double readlog_speed = 1.0;
   std::string transport = "tcp";
-  std::string stage_directory;  // -s: Player's Stage, not available
+  std::string world;             // -s: a Stage world file to simulate
+  std::optional<double> speedup;  // --speedup (-s only)
+  std::optional<std::uint64_t> seed;  // --seed (-s only)
+  std::optional<double> sim_time;     // --sim-time (-s only)
+  bool paused = false;                // --paused (-s only)
   std::string gazebo_id;        // -g: Player's Gazebo, not available
   bool quiet = false;
   bool verbose = false;

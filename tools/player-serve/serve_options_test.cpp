@@ -80,15 +80,86 @@ TEST(ServeOptions, QuietAndVerboseSetTheLogLevelVerboseWinning) {
   EXPECT_EQ(make_serve_options(command_line).options.log_level, LogLevel::kDebug);
 }
 
-TEST(ServeOptions, StageAndGazeboAreRefused) {
+TEST(ServeOptions, GazeboIsRefusedPointingAtTheSimulator) {
   auto command_line = config_only();
-  command_line.stage_directory = "/tmp/stage";
-  EXPECT_EQ(usage_error(command_line),
-            "Stage (-s) is not available: playerkit serves real and logged devices only");
-  command_line = config_only();
   command_line.gazebo_id = "default";
   EXPECT_EQ(usage_error(command_line),
-            "Gazebo (-g) is not available: playerkit serves real and logged devices only");
+            "Gazebo (-g) is not available: the gz_* drivers serve a simulated world instead "
+            "(player-serve -s WORLD gazebo.cfg)");
+}
+
+ServeCommandLine world_only() {
+  ServeCommandLine command_line;
+  command_line.world = "cave.world";
+  return command_line;
+}
+
+TEST(ServeOptions, AWorldAloneIsEnoughToServe) {
+  const auto request = make_serve_options(world_only());
+  EXPECT_TRUE(request.options.config_path.empty());
+  EXPECT_FALSE(request.options.has_configuration());
+  ASSERT_TRUE(request.options.simulation.has_value());
+  const playerkit::daemon::SimulationOptions defaults;
+  EXPECT_EQ(request.options.simulation->world, "cave.world");
+  EXPECT_EQ(request.options.simulation->speedup, defaults.speedup);
+  EXPECT_EQ(request.options.simulation->seed, defaults.seed);
+  EXPECT_FALSE(request.options.simulation->sim_time.has_value());
+  EXPECT_FALSE(request.options.simulation->paused);
+  EXPECT_EQ(request.options.served_name(), "cave.world");
+}
+
+TEST(ServeOptions, SimulationFlagsReachTheDaemon) {
+  auto command_line = world_only();
+  command_line.config_path = "gz.cfg";
+  command_line.speedup = 0.0;
+  command_line.seed = 42;
+  command_line.sim_time = 60.0;
+  command_line.paused = true;
+  const auto request = make_serve_options(command_line);
+  ASSERT_TRUE(request.options.simulation.has_value());
+  EXPECT_EQ(request.options.simulation->speedup, 0.0);
+  EXPECT_EQ(request.options.simulation->seed, 42u);
+  EXPECT_EQ(request.options.simulation->sim_time, 60.0);
+  EXPECT_TRUE(request.options.simulation->paused);
+  EXPECT_EQ(request.options.served_name(), "gz.cfg");
+}
+
+TEST(ServeOptions, NothingToServeIsAUsageError) {
+  EXPECT_EQ(usage_error(ServeCommandLine{}), "nothing to serve: give a configuration file, -s WORLD, or both");
+}
+
+TEST(ServeOptions, SimulationFlagsNeedAWorld) {
+  auto command_line = config_only();
+  command_line.speedup = 2.0;
+  EXPECT_EQ(usage_error(command_line), "--speedup runs a simulation; it needs -s WORLD");
+  command_line = config_only();
+  command_line.paused = true;
+  EXPECT_EQ(usage_error(command_line), "--paused runs a simulation; it needs -s WORLD");
+  command_line = config_only();
+  command_line.sim_time = 1.0;
+  EXPECT_EQ(usage_error(command_line), "--sim-time runs a simulation; it needs -s WORLD");
+  command_line = config_only();
+  command_line.seed = 1;
+  EXPECT_EQ(usage_error(command_line), "--seed runs a simulation; it needs -s WORLD");
+}
+
+TEST(ServeOptions, SimulationNumbersAreChecked) {
+  auto command_line = world_only();
+  command_line.speedup = -1.0;
+  EXPECT_EQ(usage_error(command_line),
+            "--speedup -1: the speedup must be 0 (as fast as possible) or above, below 1000000");
+  command_line.speedup = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(usage_error(command_line), "");
+  command_line = world_only();
+  command_line.sim_time = 0.0;
+  EXPECT_EQ(usage_error(command_line), "--sim-time 0: the simulated seconds must be above 0 and below 1e9");
+}
+
+TEST(ServeOptions, ReplayAndSimulationBothKeepTimeSoOnlyOneIsTaken) {
+  auto command_line = world_only();
+  command_line.readlog = "run.log";
+  EXPECT_EQ(usage_error(command_line),
+            "-r and -s both set the server's clock (log time, simulation time); give one of them");
 }
 
 TEST(ServeOptions, OnlyTcpTransport) {

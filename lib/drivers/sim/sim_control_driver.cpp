@@ -16,26 +16,39 @@ void SimControlDriver::setup() {
 
 void SimControlDriver::shutdown() { use_ = {}; }
 
+bool SimControlDriver::control(std::uint8_t what) {
+  switch (what) {
+    case kRun: host_->resume(); return true;
+    case kPause: host_->pause(); return true;
+    case kStep: host_->step(); return true;
+    default: return false;
+  }
+}
+
+std::uint8_t SimControlDriver::state() const { return host_->paused() || host_->run_limit_reached() ? 1 : 0; }
+
 void SimControlDriver::update() {
   if (const std::optional<core::Command> command = device().take_command(); command && !command->payload.empty()) {
-    switch (command->payload.front()) {
-      case kRun: host_->resume(); break;
-      case kPause: host_->pause(); break;
-      case kStep: host_->step(); break;
-      default:
-        device().logger().warning(device().name() + ": command " + std::to_string(command->payload.front()) +
-                                  " ignored (0 run, 1 pause, 2 step)");
-        break;
+    if (!control(command->payload.front())) {
+      device().logger().warning(device().name() + ": command " + std::to_string(command->payload.front()) +
+                                " ignored (0 run, 1 pause, 2 step)");
     }
   }
   const double time = host_->time();
-  const int state = host_->paused() || host_->run_limit_reached() ? 1 : 0;
-  if (time == published_time_ && state == published_state_) return;
+  const std::uint8_t now = state();
+  if (time == published_time_ && now == published_state_) return;
   published_time_ = time;
-  published_state_ = state;
+  published_state_ = now;
   protocol::SimulationData data;
-  data.data = static_cast<std::uint8_t>(state);
+  data.data = now;
   device().publish(protocol::encode(data), simulation_timestamp(time));
+}
+
+core::RequestResult SimControlDriver::handle_request(const core::Request& request) {
+  if (request.payload.empty() || !control(request.payload.front())) return core::RequestResult::nack();
+  protocol::SimulationData data;
+  data.data = state();
+  return core::RequestResult::ack(protocol::encode(data));
 }
 
 }  // namespace playerkit::drivers::sim

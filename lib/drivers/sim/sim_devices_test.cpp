@@ -287,5 +287,24 @@ TEST(SimControlTest, PauseRunAndStepCommands) {
   EXPECT_EQ(sim.latest<protocol::SimulationData>(control).data, 1);
 }
 
+TEST(SimControlTest, RequestsActBeforeTheirAck) {
+  World world({.step = 0.1, .seed = 1}, open_floor());
+  world.add(test_robot("robot"));
+  SimDevices sim{std::move(world), {.speedup = 0.0, .run_limit = std::nullopt, .start_paused = false}};
+  sim.load("simulation:0 ( driver \"simulation\" )\n");
+  core::Device& control = sim.device(protocol::kSimulationCode);
+  ASSERT_TRUE(control.subscribe());  // the world runs flat out
+  core::Reply reply = sim.ask(control, {1});
+  ASSERT_EQ(reply.type, MessageType::kAck);
+  EXPECT_EQ(protocol::decode<protocol::SimulationData>(reply.payload).data, 1);
+  const auto steps = sim.host().with_world([](World& w) { return w.steps(); });
+  reply = sim.ask(control, {2});
+  ASSERT_EQ(reply.type, MessageType::kAck);
+  EXPECT_EQ(sim.host().with_world([](World& w) { return w.steps(); }), steps + 1);
+  EXPECT_EQ(sim.ask(control, {7}).type, MessageType::kNack);
+  reply = sim.ask(control, {0});
+  EXPECT_EQ(protocol::decode<protocol::SimulationData>(reply.payload).data, 0);
+}
+
 }  // namespace sim_devices_test
 }  // namespace playerkit::drivers::sim

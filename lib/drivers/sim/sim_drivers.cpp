@@ -195,7 +195,8 @@ core::DriverSpec simulated_driver_spec(const SimDriverDescription& description,
     for (std::string& request : requests_of(interface)) spec.doc.requests.push_back(std::move(request));
   }
   if (description.family == SimFamily::control) {
-    spec.doc.requests = {"none; commands: 0 run, 1 pause, 2 one step (then paused)"};
+    spec.doc.requests = {"0 run, 1 pause, 2 one step (then paused): ACK with the state byte (1 paused)",
+                         "commands: the same bytes, acted on at the next server cycle"};
   }
   spec.doc.example = example_for(description);
   return spec;

@@ -127,7 +127,8 @@ TEST(WorldConfigurationTest, RobotsOnTheirPortsInWorldOrder) {
   EXPECT_EQ(text.find("robot:6665 ( )\nposition:0 ( driver \"position\" model \"robot1\" )\n"), 0u) << text;
   EXPECT_NE(text.find("robot:6666 ( )\nposition:0 ( driver \"position\" model \"robot2\" )\n"), std::string::npos)
       << text;
-  EXPECT_NE(text.find("robot:7000 ( )\nsimulation:0 ( driver \"simulation\" )\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("robot:7000 ( )\nsimulation:0 ( driver \"simulation\" alwayson 1 )\n"), std::string::npos)
+      << text;
 }
 
 }  // namespace sim_drivers_test

@@ -161,8 +161,11 @@ class SimTruthDriver final : public SimulatedDevice {
 
 // simulation: the world's run control, for scripts. Command byte (Player
 // 1.5's simulation command is one driver-defined byte): 0 run, 1 pause,
-// 2 one step then paused. Data byte: 1 while paused (or stopped at the run
-// limit), else 0, published at every step and every change.
+// 2 one step then paused, applied at the next server cycle. A request whose
+// first byte is one of them does the same before its ACK (1.5's simulation
+// interface had no requests: programs that must know the world stopped ask).
+// Data byte, and the ACK's: 1 while paused (or stopped at the run limit),
+// else 0, published at every step and every change.
 class SimControlDriver final : public core::Driver {
  public:
   static constexpr std::uint8_t kRun = 0;
@@ -175,8 +178,13 @@ class SimControlDriver final : public core::Driver {
   void setup() override;
   void shutdown() override;
   void update() override;
+  core::RequestResult handle_request(const core::Request& request) override;
 
  private:
+  // False for a byte that is none of the three.
+  bool control(std::uint8_t what);
+  [[nodiscard]] std::uint8_t state() const;
+
   std::shared_ptr<SimulationHost> host_;
   core::SharedConnection::Use use_;
   double published_time_ = -1.0;

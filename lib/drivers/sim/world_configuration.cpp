@@ -13,9 +13,9 @@ namespace playerkit::drivers::sim {
 namespace {
 
 // The world file words the simulated drivers answer to (sim_drivers.cpp).
-constexpr std::array<std::string_view, 15> kTypeWords{
-    "position", "omniposition", "laser",  "ranger", "sonar",   "fiducialfinder", "lbd",  "fiducial",
-    "blobfinder", "vision",     "ptz",    "gripper", "power",  "truth",          "simulation"};
+constexpr std::array<std::string_view, 14> kTypeWords{
+    "position", "omniposition", "laser", "ranger",  "sonar", "fiducialfinder", "lbd",
+    "fiducial", "blobfinder",   "vision", "ptz",    "gripper", "power",        "truth"};
 
 std::string_view stage13_word(std::uint16_t interface) {
   switch (interface) {
@@ -46,27 +46,24 @@ std::string world_configuration(const playerkit::sim::World& world,
                                 std::uint16_t default_port) {
   std::string text;
   std::uint16_t port = default_port;
-  bool control_taken = false;
   for (const auto& device : devices) {
     const std::string driver = world_device_driver(device);
     if (driver.empty()) continue;  // an interface no simulated driver serves
     const std::string& name = world.spec(device.model).name;
     if (name.find_first_of("\"\r\n") != std::string::npos) {
-      throw std::invalid_argument("model name \"" + text::excerpt(name) + "\" cannot be written in a configuration");
+      throw std::runtime_error("model name \"" + text::excerpt(name) + "\" cannot be written in a configuration");
     }
     if (device.port != port) {
       port = device.port;
       text += "robot:" + std::to_string(port) + " ( )\n";
     }
-    control_taken = control_taken || (port == default_port && device.interface_code == protocol::kSimulationCode &&
-                                      device.index == 0);
     text += protocol::interface_name(device.interface_code) + ":" + std::to_string(device.index) + " ( driver \"" +
             driver + "\" model \"" + name + "\" )\n";
   }
-  if (!control_taken) {
-    if (port != default_port) text += "robot:" + std::to_string(default_port) + " ( )\n";
-    text += "simulation:0 ( driver \"simulation\" )\n";
-  }
+  // World files have no simulation device. Always on: a command is acted on
+  // even when its sender has gone.
+  if (port != default_port) text += "robot:" + std::to_string(default_port) + " ( )\n";
+  text += "simulation:0 ( driver \"simulation\" alwayson 1 )\n";
   return text;
 }
 

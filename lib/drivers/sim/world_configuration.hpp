@@ -10,10 +10,10 @@
 //   position:0 ( driver "position" model "robot1" )
 //   laser:0 ( driver "laser" model "robot1.laser:0" )
 //   ...
-//   simulation:0 ( driver "simulation" )     # on the default port, last
+//   simulation:0 ( driver "simulation" alwayson 1 )   # on the default port, last
 //
 // plus a `simulation` device (run control, simulated_drivers.hpp) on the
-// default port, unless the world has that address taken.
+// default port.
 
 #include <cstdint>
 #include <string>
@@ -24,7 +24,7 @@
 
 namespace playerkit::drivers::sim {
 
-// Throws std::invalid_argument for a model name a configuration cannot hold
+// Throws std::runtime_error for a model name a configuration cannot hold
 // (a double quote or a line break in it).
 [[nodiscard]] std::string world_configuration(const playerkit::sim::World& world,
                                               const std::vector<playerkit::sim::worldfile::SimDevice>& devices,
