@@ -131,6 +131,26 @@ for line in sys.stdin:
   [[ "$output" == *"laser:5"*"range_count=361"* ]]
 }
 
+@test "writelog and amcl in a .cfg run on the simulated devices, on simulation time" {
+  cat > "$BATS_TEST_TMPDIR/localize.cfg" <<EOF
+null:0 ( driver "writelog" filename "$BATS_TEST_TMPDIR/sim.log" devices ["position:0" "laser:0"] alwayson 1 )
+localize:0 ( driver "amcl" map_file "$worlds/cave.pnm" map_scale 0.03 map_negate 1 init_pose [2 2 45] init_pose_var [0.2 0.2 10] )
+EOF
+  serve_world "$worlds/simple.world" --speedup 4 "$BATS_TEST_TMPDIR/localize.cfg"
+  run timeout 20 "$player_cat" "127.0.0.1:$server_port" --once localize:0 --si --format json
+  [ "$status" -eq 0 ]
+  # The estimate is where simple.world puts the robot: (2, 2), 45°.
+  printf '%s\n' "$output" | python3 -c '
+import json, math, sys
+mean = json.loads(sys.stdin.readline())["data"]["hypoths"][0]["mean"]
+assert abs(mean[0] - 2.0) < 0.2 and abs(mean[1] - 2.0) < 0.2, mean
+assert abs(math.degrees(mean[2]) - 45) < 10, mean'
+  kill -TERM "$server_pid"
+  wait_for_exit "$server_pid"
+  # writelog recorded the laser with simulation time stamps.
+  grep -q '^0000000000\.[0-9]* vm [0-9]* laser 00 0000000000\.' "$BATS_TEST_TMPDIR/sim.log"
+}
+
 @test "world-file errors are file:line:col, exit 2" {
   printf 'resolution 0.03\nposition ( pose [1 2 )\n' > "$BATS_TEST_TMPDIR/bad.world"
   run "$player_serve" -s "$BATS_TEST_TMPDIR/bad.world" -p 0 --bind 127.0.0.1
