@@ -1,6 +1,7 @@
 #include "algorithms/grid/square_caster.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -9,6 +10,10 @@ namespace playerkit::grid {
 namespace {
 
 constexpr int kMostClearance = 255;
+// Walks a batch advances side by side: each step is a chain of dependent
+// arithmetic and a memory read, which independent walks overlap (4 measured
+// faster than 2, 3, 6 or 8 on the build machine).
+constexpr std::size_t kSideBySide = 4;
 // A direction component this small counts as 0: its crossings are then
 // "never" (kNeverInverse times the distance, finite so that no inf * 0
 // appears), and a ray with both components this small has no direction.
@@ -170,7 +175,7 @@ void SquareCaster::ranges(std::span<const Ray> rays, std::span<double> ranges) c
     throw std::invalid_argument("SquareCaster::ranges: " + std::to_string(rays.size()) + " rays but room for " +
                                 std::to_string(ranges.size()) + " ranges");
   }
-  // Two walks side by side; a walk that ends takes the next ray. The rays
+  // Walks side by side; a walk that ends takes the next ray. The rays
   // answered without a walk are answered as they are taken.
   std::size_t next = 0;
   const auto take_next = [&](Walk& walk, std::size_t& index, int& col, int& row, double& along) {
@@ -191,33 +196,35 @@ void SquareCaster::ranges(std::span<const Ray> rays, std::span<double> ranges) c
     const double max_range = rays[index].max_range;
     ranges[index] = status == kHit ? std::min(along * resolution_, max_range) : max_range;
   };
-  Walk first, second;
-  std::size_t first_index = 0, second_index = 0;
-  int first_col = 0, first_row = 0, second_col = 0, second_row = 0;
-  double first_along = 0.0, second_along = 0.0;
-  bool first_walks = take_next(first, first_index, first_col, first_row, first_along);
-  bool second_walks = take_next(second, second_index, second_col, second_row, second_along);
-  while (first_walks && second_walks) {
-    const int first_status = advance(first, first_col, first_row, first_along);
-    const int second_status = advance(second, second_col, second_row, second_along);
-    if (first_status != kWalking) {
-      finish(first_status, first_index, first_along);
-      first_walks = take_next(first, first_index, first_col, first_row, first_along);
-    }
-    if (second_status != kWalking) {
-      finish(second_status, second_index, second_along);
-      second_walks = take_next(second, second_index, second_col, second_row, second_along);
+  std::array<Walk, kSideBySide> walks;
+  std::array<std::size_t, kSideBySide> index{};
+  std::array<int, kSideBySide> col{}, row{};
+  std::array<double, kSideBySide> along{};
+  std::array<bool, kSideBySide> walking{};
+  bool all_walking = true;
+  for (std::size_t k = 0; k < kSideBySide; ++k) {
+    walking[k] = take_next(walks[k], index[k], col[k], row[k], along[k]);
+    all_walking = all_walking && walking[k];
+  }
+  while (all_walking) {
+    std::array<int, kSideBySide> status{};
+    for (std::size_t k = 0; k < kSideBySide; ++k) status[k] = advance(walks[k], col[k], row[k], along[k]);
+    for (std::size_t k = 0; k < kSideBySide; ++k) {
+      if (status[k] == kWalking) continue;
+      finish(status[k], index[k], along[k]);
+      walking[k] = take_next(walks[k], index[k], col[k], row[k], along[k]);
+      all_walking = all_walking && walking[k];
     }
   }
-  if (!first_walks && !second_walks) return;
-  // One walk left, and no rays: finish it alone.
-  const Walk& last = first_walks ? first : second;
-  const std::size_t last_index = first_walks ? first_index : second_index;
-  int col = first_walks ? first_col : second_col, row = first_walks ? first_row : second_row;
-  double along = first_walks ? first_along : second_along;
-  for (;;) {
-    const int status = advance(last, col, row, along);
-    if (status != kWalking) return finish(status, last_index, along);
+  // No rays left: finish the walks still going, one by one.
+  for (std::size_t k = 0; k < kSideBySide; ++k) {
+    while (walking[k]) {
+      const int status = advance(walks[k], col[k], row[k], along[k]);
+      if (status != kWalking) {
+        finish(status, index[k], along[k]);
+        walking[k] = false;
+      }
+    }
   }
 }
 

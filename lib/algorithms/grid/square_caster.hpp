@@ -12,8 +12,8 @@
 // cave at 3 cm where cast_ray walks 90 cells).
 //
 // Each step is a chain of dependent arithmetic and one memory read, with no
-// branch that depends on the map; ranges() walks two rays side by side so
-// that one's chain overlaps the other's.
+// branch that depends on the map; ranges() walks four rays side by side so
+// that their chains overlap.
 //
 // Every crossing is computed from the ray's origin, never accumulated, so a
 // ray's answer depends on the ray alone; it is cast_ray's up to rounding
@@ -22,8 +22,8 @@
 //
 // Compared with RangeCaster (a Euclidean distance map; for a particle
 // cloud's rays, which start near one another): the same byte a cell, a
-// build without a distance transform, and fewer, branch-free steps (in
-// bench/sim_bench's cave, 2-3x faster per ray on the shared machine).
+// build without a distance transform, and fewer, branch-free steps
+// (bench/distance_map_bench: 2-5x faster per ray).
 
 #include "algorithms/grid/occupancy_grid.hpp"
 #include "algorithms/grid/ray_cast.hpp"

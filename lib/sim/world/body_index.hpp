@@ -70,6 +70,10 @@ class BodyIndex {
   // a model may be visited more than once.
   template <typename Visit>
   void near(const Eigen::Vector2d& centre, double radius, Visit&& visit) const;
+  // The same for solid bodies only, as the CellSlot their cells list them
+  // by (oversized ones too).
+  template <typename Visit>
+  void near_solid(const Eigen::Vector2d& centre, double radius, Visit&& visit) const;
 
  private:
   struct CellRange {
@@ -160,6 +164,34 @@ void BodyIndex::along_ray(const Eigen::Vector2d& origin, const Eigen::Vector2d& 
     cell[axis] += step[axis];
     if (cell[axis] < 0 || cell[axis] >= limits[axis]) return;
     next_border[axis] += border_spacing[axis];
+  }
+}
+
+template <typename Visit>
+void BodyIndex::near_solid(const Eigen::Vector2d& centre, double radius, Visit&& visit) const {
+  for (const ModelId id : oversized_) {
+    const IndexedBody& indexed = body(id);
+    if (!indexed.solid) continue;
+    visit(CellSlot{.id = id,
+                   .root = indexed.root,
+                   .x = indexed.shape.centre.x(),
+                   .y = indexed.shape.centre.y(),
+                   .reach = std::numeric_limits<float>::infinity(),  // the exact test decides
+                   .ranger_visible = indexed.ranger_visible});
+  }
+  if (columns_ == 0) return;
+  const auto clamped = [this](double coordinate, double low, int count) {
+    const double cells = std::floor((coordinate - low) / cell_size_);
+    return static_cast<int>(std::clamp(cells, -1.0, static_cast<double>(count)));
+  };
+  const int col0 = std::max(clamped(centre.x() - radius, low_.x(), columns_), 0);
+  const int col1 = std::min(clamped(centre.x() + radius, low_.x(), columns_), columns_ - 1);
+  const int row0 = std::max(clamped(centre.y() - radius, low_.y(), rows_), 0);
+  const int row1 = std::min(clamped(centre.y() + radius, low_.y(), rows_), rows_ - 1);
+  for (int row = row0; row <= row1; ++row) {
+    for (int col = col0; col <= col1; ++col) {
+      for (const CellSlot& slot : solid_cells_[cell_index(col, row)]) visit(slot);
+    }
   }
 }
 

@@ -105,8 +105,7 @@ class Scene {
                                    double max_range) const;
   // cast_all's bodies: lowers each hit to the nearest body its ray enters
   // before it.
-  void nearest_bodies(std::span<const SceneRay> rays, double max_range, ModelId ignore_root,
-                      std::span<RayHit> hits) const;
+  void nearest_bodies(std::span<const SceneRay> rays, ModelId ignore_root, std::span<RayHit> hits) const;
   // Lowers `hit` to the nearest body the ray enters before it.
   void nearest_body(const Eigen::Vector2d& origin, const Eigen::Vector2d& direction, ModelId ignore_root,
                     const ModelFilter& stops, RayHit& hit) const;

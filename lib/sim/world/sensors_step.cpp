@@ -39,7 +39,7 @@ void World::State::update_sensor(ModelId id) {
     const auto& spec = std::get<SonarSpec>(model.spec.params);
     if (!sonar->clock.due(steps, dt, spec.interval)) return;
     NoiseDraws draws = noise();
-    sonar->scan = scan_sonar(scene, spec, global(id), own_root, draws);
+    sonar->scan = scan_sonar(scene, spec, sonar->headings, global(id), own_root, draws);
     sonar->scan.time = time;
     sonar->clock.last_step = steps;
   } else if (auto* finder = std::get_if<FiducialState>(&model.device)) {

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "sim/world/noise.hpp"
+#include "sim/world/sonar.hpp"
 #include "sim/world/world_state.hpp"
 
 namespace playerkit::sim {
@@ -48,7 +49,11 @@ DeviceState initial_device_state(const ModelSpec& spec, std::uint64_t seed, Mode
     state.spec = *laser;
     return state;
   }
-  if (std::holds_alternative<SonarSpec>(spec.params)) return SonarState{};
+  if (const auto* sonar = std::get_if<SonarSpec>(&spec.params)) {
+    SonarState state;
+    state.headings = transducer_headings(*sonar);
+    return state;
+  }
   if (std::holds_alternative<FiducialSpec>(spec.params)) return FiducialState{};
   if (std::holds_alternative<BlobfinderSpec>(spec.params)) return BlobfinderState{};
   if (const auto* ptz = std::get_if<PtzSpec>(&spec.params)) {

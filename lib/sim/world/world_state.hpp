@@ -52,6 +52,7 @@ struct LaserState {
 struct SonarState {
   SensorClock clock;
   SonarScan scan;
+  std::vector<Eigen::Vector2d> headings;  // transducer_headings(spec), computed once
 };
 
 struct FiducialState {
