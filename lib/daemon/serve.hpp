@@ -20,6 +20,10 @@ struct SimulationOptions {
   std::uint64_t seed = 0;           // noise and odometry error draws
   std::optional<double> sim_time;   // stop stepping after this many simulated seconds
   bool paused = false;              // start paused (the simulation device runs it)
+  // --picture: a PNG of the world written when serving ends and on request
+  // (the simulation device's byte 3); empty: none. Never over `picture_inputs`.
+  std::string picture;
+  std::vector<std::string> picture_inputs;
 };
 
 struct ServeOptions {

@@ -1,5 +1,6 @@
 #include "daemon/simulation.hpp"
 
+#include <optional>
 #include <sstream>
 #include <utility>
 
@@ -28,11 +29,19 @@ ServedWorld load_served_world(const SimulationOptions& options, std::uint16_t de
   }
   if (options.sim_time) summary << ", stopping at " << *options.sim_time << " s";
   if (options.paused) summary << ", paused";
+  std::optional<drivers::sim::PictureSettings> picture;
+  if (!options.picture.empty()) {
+    picture = drivers::sim::PictureSettings{.file = options.picture,
+                                            .inputs = {options.picture_inputs.begin(), options.picture_inputs.end()}};
+    summary << ", picture " << text::excerpt(options.picture);
+  }
   served.summary = summary.str();
   served.source = std::make_shared<drivers::sim::SimulationSource>(
       std::move(loaded.world), options.world,
-      drivers::sim::SimulationSettings{
-          .speedup = options.speedup, .run_limit = options.sim_time, .start_paused = options.paused});
+      drivers::sim::SimulationSettings{.speedup = options.speedup,
+                                       .run_limit = options.sim_time,
+                                       .start_paused = options.paused,
+                                       .picture = std::move(picture)});
   return served;
 }
 

@@ -38,7 +38,7 @@ go_to() {
 
 @test "a loop in the cave, recorded and localized by amcl-offline within 5 cm of the simulator's truth" {
   start_server "$BATS_TEST_TMPDIR/serve.log" -s "$worlds/simple.world" -p 0 --bind 127.0.0.1 \
-    --speedup 10 --seed 1
+    --speedup 10 --seed 1 --picture "$BATS_TEST_TMPDIR/run.png"
   # Odometry in the world's frame (it starts at 0,0,0 where the robot stands: 2 m, 2 m, 45 degrees).
   run "$player_send" "127.0.0.1:$server_port" position:0 req set-odom x=2000 y=2000 theta=45
   [ "$status" -eq 0 ]
@@ -56,6 +56,12 @@ go_to() {
   kill -INT "$recorder_pid"
   wait_for_exit "$recorder_pid"
   [ "$exit_status" -eq 0 ]
+  # The picture of the run: written when the server stops.
+  kill -TERM "$server_pid"
+  wait_for_exit "$server_pid"
+  [ "$exit_status" -eq 0 ]
+  [ "$(head -c 8 "$BATS_TEST_TMPDIR/run.png" | od -An -tx1 | tr -d ' ')" = 89504e470d0a1a0a ]
+  grep -q "wrote the picture $BATS_TEST_TMPDIR/run.png" "$BATS_TEST_TMPDIR/serve.log"
 
   run "$player_log" info "$BATS_TEST_TMPDIR/run.log" --json
   [ "$status" -eq 0 ]
@@ -77,4 +83,37 @@ print("position RMSE %.3f m over %d estimates" % (rmse, result["matched"]), file
 assert result["matched"] == result["estimates"], result
 assert rmse < 0.05, rmse
 assert result["all"]["heading_rmse_rad"] < 0.035, result'
+}
+
+@test "--picture: written on the simulation device's byte 3 (a command, or a request answered once written) and at the end" {
+  start_server "$BATS_TEST_TMPDIR/serve.log" -s "$worlds/simple.world" -p 0 --bind 127.0.0.1 \
+    --picture "$BATS_TEST_TMPDIR/world.png"
+  run "$player_send" "127.0.0.1:$server_port" simulation:0 cmd cmd=3
+  [ "$status" -eq 0 ]
+  for _ in $(seq 1 50); do [ -s "$BATS_TEST_TMPDIR/world.png" ] && break; sleep 0.1; done
+  [ -s "$BATS_TEST_TMPDIR/world.png" ]
+  rm "$BATS_TEST_TMPDIR/world.png"
+  run "$player_send" "127.0.0.1:$server_port" --stdin <<<'{"type":"req","device":"simulation:0","data":{"raw":[3]}}'
+  [ "$status" -eq 0 ]
+  [[ "$output" == *'"type":"ack"'* ]]
+  [ -s "$BATS_TEST_TMPDIR/world.png" ]  # the ACK comes once it is written
+  rm "$BATS_TEST_TMPDIR/world.png"
+  kill -INT "$server_pid"
+  wait_for_exit "$server_pid"
+  [ "$exit_status" -eq 0 ]
+  [ -s "$BATS_TEST_TMPDIR/world.png" ]
+  [ "$(grep -c "wrote the picture $BATS_TEST_TMPDIR/world.png" "$BATS_TEST_TMPDIR/serve.log")" -eq 3 ]
+}
+
+@test "--picture is refused over the world file, in a missing directory, and without -s" {
+  run "$player_serve" -s "$worlds/simple.world" -p 0 --bind 127.0.0.1 --picture "$worlds/simple.world"
+  [ "$status" -eq 2 ]
+  [[ "$output" == *"simple.world"* ]]
+  run "$player_serve" -s "$worlds/simple.world" -p 0 --bind 127.0.0.1 --picture "$BATS_TEST_TMPDIR/no/run.png"
+  [ "$status" -eq 2 ]
+  [[ "$output" == *"the directory $BATS_TEST_TMPDIR/no does not exist"* ]]
+  printf 'null:0 ( driver "null" )\n' >"$BATS_TEST_TMPDIR/a.cfg"
+  run "$player_serve" -p 0 --bind 127.0.0.1 --picture "$BATS_TEST_TMPDIR/run.png" "$BATS_TEST_TMPDIR/a.cfg"
+  [ "$status" -eq 2 ]
+  [[ "$output" == *"--picture runs a simulation; it needs -s WORLD"* ]]
 }

@@ -42,6 +42,14 @@ constexpr const char* kExamples = R"(Examples:
                                        position:1 ( driver "gz_position" gz_id "robot1" )
                                        or writelog and amcl on the simulated devices
   player-serve --check -s cave.world   read the world and list what it would serve
+  player-serve -s cave.world --picture run.png
+                                       run.png shows the world when serving ends (SIGINT,
+                                       SIGTERM, SIGHUP): the map, the robots and their trails,
+                                       the latest laser and sonar rays; written now by
+                                       player-send simulation:0 cmd cmd=3, or, to wait until
+                                       it is written (ACK; NACK when it cannot be):
+                                       echo '{"type":"req","device":"simulation:0",
+                                         "data":{"raw":[3]}}' | player-send --stdin
 
 Signals: SIGINT, SIGTERM and SIGHUP stop accepting clients, shut every device
 down and exit 0.
@@ -78,6 +86,10 @@ int main(int argc, char** argv) {
   app.add_option("--sim-time", command_line.sim_time,
                  "with -s: stop the simulation after this many simulated seconds (serving goes on)");
   app.add_flag("--paused", command_line.paused, "with -s: start paused (the simulation device runs it)");
+  app.add_option("--picture", command_line.picture,
+                 "with -s: a PNG of the world (map, robots, trails, the latest rays) written when serving "
+                 "ends and whenever the simulation device gets byte 3")
+      ->type_name("FILE.png");
   app.add_option("-g", command_line.gazebo_id, "Gazebo server (not available in playerkit)");
   app.add_flag("-q,--quiet", command_line.quiet, "errors only");
   app.add_flag("-v,--verbose", command_line.verbose, "also debug messages (client traffic problems, set-up)");

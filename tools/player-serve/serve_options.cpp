@@ -1,6 +1,9 @@
 #include "serve_options.hpp"
 
+#include <filesystem>
 #include <sstream>
+
+#include "output_file.hpp"
 
 namespace playerkit::serve {
 
@@ -13,6 +16,7 @@ std::optional<daemon::SimulationOptions> simulation_options(const ServeCommandLi
                         : command_line.seed     ? "--seed"
                         : command_line.sim_time ? "--sim-time"
                         : command_line.paused   ? "--paused"
+                        : !command_line.picture.empty() ? "--picture"
                                                 : nullptr;
     if (stray != nullptr) throw UsageError(std::string(stray) + " runs a simulation; it needs -s WORLD");
     return std::nullopt;
@@ -42,6 +46,19 @@ std::optional<daemon::SimulationOptions> simulation_options(const ServeCommandLi
   }
   simulation.seed = command_line.seed.value_or(0);
   simulation.paused = command_line.paused;
+  if (!command_line.picture.empty()) {
+    // Checked now: the picture is written when serving ends, long after.
+    simulation.picture_inputs = {command_line.world};
+    if (!command_line.config_path.empty()) simulation.picture_inputs.push_back(command_line.config_path);
+    tools::refuse_output_over_inputs(command_line.picture, simulation.picture_inputs);
+    const std::filesystem::path directory = std::filesystem::path(command_line.picture).parent_path();
+    std::error_code error;
+    if (!directory.empty() && !std::filesystem::is_directory(directory, error)) {
+      throw UsageError("--picture " + command_line.picture + ": the directory " + directory.string() +
+                       " does not exist");
+    }
+    simulation.picture = command_line.picture;
+  }
   return simulation;
 }
 

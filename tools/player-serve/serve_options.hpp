@@ -31,6 +31,7 @@ struct ServeCommandLine {
   std::optional<std::uint64_t> seed;  // --seed (-s only)
   std::optional<double> sim_time;     // --sim-time (-s only)
   bool paused = false;                // --paused (-s only)
+  std::string picture;                // --picture FILE.png (-s only)
   std::string gazebo_id;        // -g: Player's Gazebo, not available
   bool quiet = false;
   bool verbose = false;

@@ -5,6 +5,8 @@
 #include <limits>
 #include <string>
 
+#include "support/scratch_directory.hpp"
+
 namespace serve_options_test {
 
 using playerkit::core::LogLevel;
@@ -141,6 +143,30 @@ TEST(ServeOptions, SimulationFlagsNeedAWorld) {
   command_line = config_only();
   command_line.seed = 1;
   EXPECT_EQ(usage_error(command_line), "--seed runs a simulation; it needs -s WORLD");
+}
+
+TEST(ServeOptions, APictureNeedsAWorldAnExistingDirectoryAndNoInputsName) {
+  const playerkit::testing::ScratchDirectory scratch("serve_options_test");
+  auto command_line = world_only();
+  command_line.world = scratch.write("cave.world", "resolution 0.03\n").string();
+  command_line.config_path = scratch.write("gz.cfg", "\n").string();
+  command_line.picture = scratch.file("run.png").string();
+  const auto request = make_serve_options(command_line);
+  ASSERT_TRUE(request.options.simulation.has_value());
+  EXPECT_EQ(request.options.simulation->picture, command_line.picture);
+  EXPECT_EQ(request.options.simulation->picture_inputs,
+            (std::vector<std::string>{command_line.world, command_line.config_path}));
+
+  command_line.picture = command_line.world;
+  EXPECT_NE(usage_error(command_line).find("cave.world"), std::string::npos) << usage_error(command_line);
+  command_line.picture = (scratch.path() / "." / "gz.cfg").string();
+  EXPECT_NE(usage_error(command_line), "");
+  command_line.picture = scratch.file("missing/run.png").string();
+  EXPECT_EQ(usage_error(command_line), "--picture " + command_line.picture + ": the directory " +
+                                           scratch.file("missing").string() + " does not exist");
+  command_line = config_only();
+  command_line.picture = "run.png";
+  EXPECT_EQ(usage_error(command_line), "--picture runs a simulation; it needs -s WORLD");
 }
 
 TEST(ServeOptions, SimulationNumbersAreChecked) {

@@ -21,6 +21,7 @@ bool SimControlDriver::control(std::uint8_t what) {
     case kRun: host_->resume(); return true;
     case kPause: host_->pause(); return true;
     case kStep: host_->step(); return true;
+    case kPicture: return host_->write_picture();
     default: return false;
   }
 }
@@ -29,9 +30,10 @@ std::uint8_t SimControlDriver::state() const { return host_->paused() || host_->
 
 void SimControlDriver::update() {
   if (const std::optional<core::Command> command = device().take_command(); command && !command->payload.empty()) {
-    if (!control(command->payload.front())) {
+    // A picture that could not be written is logged by the host already.
+    if (!control(command->payload.front()) && command->payload.front() != kPicture) {
       device().logger().warning(device().name() + ": command " + std::to_string(command->payload.front()) +
-                                " ignored (0 run, 1 pause, 2 step)");
+                                " ignored (0 run, 1 pause, 2 step, 3 picture)");
     }
   }
   const double time = host_->time();

@@ -161,7 +161,8 @@ class SimTruthDriver final : public SimulatedDevice {
 
 // simulation: the world's run control, for scripts. Command byte (Player
 // 1.5's simulation command is one driver-defined byte): 0 run, 1 pause,
-// 2 one step then paused, applied at the next server cycle. A request whose
+// 2 one step then paused, 3 write the picture (player-serve --picture),
+// applied at the next server cycle. A request whose
 // first byte is one of them does the same before its ACK (1.5's simulation
 // interface had no requests: programs that must know the world stopped ask).
 // Data byte, and the ACK's: 1 while paused (or stopped at the run limit),
@@ -171,6 +172,7 @@ class SimControlDriver final : public core::Driver {
   static constexpr std::uint8_t kRun = 0;
   static constexpr std::uint8_t kPause = 1;
   static constexpr std::uint8_t kStep = 2;
+  static constexpr std::uint8_t kPicture = 3;  // NACKed as a request when none was asked for
 
   explicit SimControlDriver(std::shared_ptr<SimulationHost> host);
 
@@ -181,7 +183,7 @@ class SimControlDriver final : public core::Driver {
   core::RequestResult handle_request(const core::Request& request) override;
 
  private:
-  // False for a byte that is none of the three.
+  // False for a byte that is none of the four, or a picture not written.
   bool control(std::uint8_t what);
   [[nodiscard]] std::uint8_t state() const;
 

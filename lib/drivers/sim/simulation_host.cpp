@@ -1,6 +1,8 @@
 #include "drivers/sim/simulation_host.hpp"
 
 #include <cmath>
+#include <exception>
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
@@ -39,6 +41,10 @@ SimulationHost::SimulationHost(playerkit::sim::World world, std::string name, Si
   clock_->set(simulation_timestamp(world_.time()));
   paused_ = settings_.start_paused;
   limit_reached_ = settings_.run_limit && world_.time() + kTimeTolerance >= *settings_.run_limit;
+  if (settings_.picture) {
+    picture_ = std::make_unique<SimulationPicture>(*settings_.picture);
+    picture_->record(world_);
+  }
 }
 
 SimulationHost::~SimulationHost() { stop(); }
@@ -47,12 +53,38 @@ void SimulationHost::start() {
   std::lock_guard lock(control_mutex_);
   if (started_) return;
   started_ = true;
+  final_picture_due_ = picture_ != nullptr;
   thread_ = std::jthread([this](const std::stop_token& stop) { run(stop); });
 }
 
 void SimulationHost::stop() {
   thread_.request_stop();
   if (thread_.joinable() && thread_.get_id() != std::this_thread::get_id()) thread_.join();
+  bool write_final = false;
+  {
+    std::lock_guard lock(control_mutex_);
+    std::swap(write_final, final_picture_due_);
+  }
+  if (write_final) write_picture();
+}
+
+bool SimulationHost::write_picture() {
+  if (!picture_) {
+    logger_.warning(name_ + ": no picture to write (player-serve --picture FILE.png asks for one)");
+    return false;
+  }
+  const auto snapshot = with_world([this](const playerkit::sim::World& world) { return picture_->snapshot(world); });
+  const std::string file = picture_->settings().file.string();
+  try {
+    picture_->write(snapshot);
+  } catch (const std::exception& e) {  // never out of stop(), which the destructor calls
+    logger_.error(name_ + ": picture not written: " + e.what());
+    return false;
+  }
+  std::ostringstream message;
+  message << name_ << ": wrote the picture " << file << " (t = " << snapshot.time << " s)";
+  logger_.info(message.str());
+  return true;
 }
 
 double SimulationHost::activate(playerkit::sim::ModelId model) {
@@ -113,6 +145,7 @@ bool SimulationHost::may_run() const { return !paused_ && !limit_reached_; }
 bool SimulationHost::step_world() {
   std::lock_guard lock(world_mutex_);
   world_.step();
+  if (picture_) picture_->record(world_);
   const double now = world_.time();
   time_.store(now);
   clock_->set(simulation_timestamp(now));

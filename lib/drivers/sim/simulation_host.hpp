@@ -32,6 +32,7 @@
 #include "core/clock.hpp"
 #include "core/logger.hpp"
 #include "core/shared_connection.hpp"
+#include "drivers/sim/simulation_picture.hpp"
 #include "sim/world/world.hpp"
 
 namespace playerkit::drivers::sim {
@@ -40,6 +41,9 @@ struct SimulationSettings {
   double speedup = 1.0;             // × real time; 0: as fast as possible
   std::optional<double> run_limit;  // simulation seconds; stepping stops there
   bool start_paused = false;
+  // A PNG of the world (trails fed every step), written by write_picture()
+  // and when the host stops.
+  std::optional<PictureSettings> picture{};
 };
 
 // Simulation seconds as a header time (whole microseconds).
@@ -57,8 +61,15 @@ class SimulationHost final : public core::SharedConnection {
 
   // Starts the stepping thread; later calls do nothing.
   void start();
-  // Stops it (the world keeps its state). Also done by the destructor.
+  // Stops it (the world keeps its state), then writes the picture if one
+  // was asked for (the first stop after start() only). Also done by the
+  // destructor.
   void stop();
+
+  // Writes the picture now: true when written, false (logged) when no
+  // picture was asked for or it could not be written. The world is locked
+  // only while what is drawn is copied out.
+  bool write_picture();
 
   // `f(world)` with the world locked: every read and change of the world
   // goes through here (from the event loop, requests, tests).
@@ -111,6 +122,8 @@ class SimulationHost final : public core::SharedConnection {
   std::shared_ptr<core::ManualClock> clock_;
   std::atomic<double> time_{0.0};
   std::atomic<std::uint64_t> late_restarts_{0};
+  // record() and snapshot() under world_mutex_; its write() is its own.
+  std::unique_ptr<SimulationPicture> picture_;
 
   std::mutex world_mutex_;  // the world and active_
   std::map<playerkit::sim::ModelId, int> active_;
@@ -120,6 +133,7 @@ class SimulationHost final : public core::SharedConnection {
   bool paused_ = false;
   bool limit_reached_ = false;
   bool started_ = false;
+  bool final_picture_due_ = false;  // started with a picture, not yet stopped
   std::jthread thread_;  // last: stops before the rest goes
 };
 
