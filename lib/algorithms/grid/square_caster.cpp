@@ -154,6 +154,15 @@ SquareCaster::Start SquareCaster::start(Walk& walk, const Ray& ray) const {
   return status;
 }
 
+double SquareCaster::clear_around(const Eigen::Vector2d& point) const {
+  if (width_ == 0) return 0.0;
+  const double x = (point.x() - origin_.x()) / resolution_, y = (point.y() - origin_.y()) / resolution_;
+  if (!(x >= 0.0 && y >= 0.0 && x < width_ && y < height_)) return 0.0;
+  const int clearance = clearance_[static_cast<std::size_t>(static_cast<int>(y)) * static_cast<std::size_t>(width_) +
+                                   static_cast<std::size_t>(static_cast<int>(x))];
+  return clearance == 0 ? 0.0 : (clearance - 1) * resolution_;
+}
+
 double SquareCaster::range(const Eigen::Vector2d& origin, double angle, double max_range) const {
   return range(origin, Eigen::Vector2d(std::cos(angle), std::sin(angle)), max_range);
 }

@@ -64,6 +64,11 @@ class SquareCaster {
   // the same answers, bit for bit, in less time than one by one.
   void ranges(std::span<const Ray> rays, std::span<double> ranges) const;
 
+  // How far around `point` (in x and in y, metres) no cell stops a ray:
+  // (k - 1) cells for the clearance k of its cell; 0 in a stopping cell or
+  // off the grid. A body within that square needs no cell-by-cell test.
+  [[nodiscard]] double clear_around(const Eigen::Vector2d& point) const;
+
   [[nodiscard]] RayStop stop() const { return stop_; }
 
  private:

@@ -188,6 +188,36 @@ TEST(SquareCaster, OriginOutsideTheGridGivesMaxRange) {
   EXPECT_EQ(caster.range({5.0, 5.0}, 0.0, 5.0), 0.0);
 }
 
+TEST(SquareCaster, ClearAroundIsTheClearSquareOfAPointsCell) {
+  OccupancyGrid lone(30, 30, 0.5, {-5.0, -5.0}, CellState::free);
+  lone.set(10, 10, CellState::occupied);
+  const SquareCaster caster(lone, RayStop::occupied);
+  EXPECT_DOUBLE_EQ(caster.clear_around({-5.0 + 14.2 * 0.5, -5.0 + 10.5 * 0.5}), 1.5);  // 4 cells off: 3 clear
+  EXPECT_DOUBLE_EQ(caster.clear_around({-5.0 + 11.5 * 0.5, -5.0 + 9.5 * 0.5}), 0.0);   // the next cell
+  EXPECT_EQ(caster.clear_around({-5.0 + 10.5 * 0.5, -5.0 + 10.5 * 0.5}), 0.0);  // in the wall
+  EXPECT_EQ(caster.clear_around({-6.0, 0.0}), 0.0);                              // off the grid
+  // In the rooms: no stopping cell overlaps the square it promises.
+  const OccupancyGrid grid = rooms();
+  const SquareCaster rooms_caster(grid, RayStop::occupied_or_unknown);
+  std::mt19937 random(8);
+  std::uniform_real_distribution<double> x(-2.0, -2.0 + grid.width() * 0.05), y(-1.0, -1.0 + grid.height() * 0.05);
+  int roomy = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Eigen::Vector2d point(x(random), y(random));
+    const double clear = rooms_caster.clear_around(point);
+    roomy += clear > 0.3;
+    if (clear == 0.0) continue;  // nothing promised
+    const Eigen::Vector2i low = grid.world_to_cell(point - Eigen::Vector2d::Constant(clear - 1e-9));
+    const Eigen::Vector2i high = grid.world_to_cell(point + Eigen::Vector2d::Constant(clear - 1e-9));
+    for (int row = std::max(low.y(), 0); row <= std::min(high.y(), grid.height() - 1); ++row) {
+      for (int col = std::max(low.x(), 0); col <= std::min(high.x(), grid.width() - 1); ++col) {
+        ASSERT_EQ(grid.at(col, row), CellState::free) << point.transpose() << " clear " << clear;
+      }
+    }
+  }
+  EXPECT_GT(roomy, 200);
+}
+
 TEST(SquareCaster, ABatchNeedsRoomForEveryRange) {
   const SquareCaster caster(OccupancyGrid(10, 10, 0.1, {0.0, 0.0}, CellState::free), RayStop::occupied);
   std::vector<SquareCaster::Ray> rays(3, {.origin = {0.5, 0.5}, .direction = {1.0, 0.0}, .max_range = 2.0});

@@ -54,7 +54,9 @@ bool World::State::collides_at(ModelId id, const geometry::Pose2& pose) {
       const SceneModel& model = scene.model(riding);
       if (hit || carried || !is_obstacle_body(model)) return;
       const PlacedBody body = place_body(model.body, riding_pose.compose(model.body.offset));
-      if (body_overlaps_walls(scene.map(), body)) {
+      // In open floor the cell-by-cell test is not needed.
+      const bool clear_of_walls = body.bounding_radius < scene.walls_clear_around(body.centre);
+      if (!clear_of_walls && body_overlaps_walls(scene.map(), body)) {
         hit = true;
         return;
       }

@@ -57,6 +57,9 @@ class Scene {
   explicit Scene(grid::OccupancyGrid map);
 
   [[nodiscard]] const grid::OccupancyGrid& map() const { return map_; }
+  // How far around `point` (in x and in y) the map has no wall: a body
+  // within that square needs no cell-by-cell test. 0 when not known.
+  [[nodiscard]] double walls_clear_around(const Eigen::Vector2d& point) const { return walls_.clear_around(point); }
 
   // The first wall cell or model body a ray meets. Models of the tree of
   // `ignore_root` (the sensor's own robot) are never hit; others only where
