@@ -134,16 +134,15 @@ SquareCaster::Start SquareCaster::start(Walk& walk, const Ray& ray) const {
   const int by_x = exit_x <= exit_y;  // x first at a tie, as cast_ray
   const double leaves = std::min(exit_x, exit_y);
   // The cell entered: past the border on the axis it leaves by, and where
-  // the ray is (kept within the square against rounding) on the other.
-  // Both clamps are computed; the bounds collapse to the one cell past the
-  // border on the axis left by.
+  // the ray is on the other. Rounding may put that one a cell off where the
+  // ray passes within rounding of a cell corner: a tie either cell answers.
+  // Chosen by masks rather than a select, which the compiler may turn into
+  // a branch that no predictor guesses.
   const int cell_x = floor_cell(walk.x + leaves * walk.dx);
   const int cell_y = floor_cell(walk.y + leaves * walk.dy);
-  const int by_y = 1 - by_x;
-  const int next_col = std::clamp(cell_x, col - reach + 1 + by_x * (jump_x + reach - 1),
-                                  col + reach - 1 + by_x * (jump_x - reach + 1));
-  const int next_row = std::clamp(cell_y, row - reach + 1 + by_y * (jump_y + reach - 1),
-                                  row + reach - 1 + by_y * (jump_y - reach + 1));
+  const int leaves_x_mask = -by_x;  // all ones when the ray leaves by x
+  const int next_col = cell_x ^ ((cell_x ^ (col + jump_x)) & leaves_x_mask);
+  const int next_row = (row + jump_y) ^ (((row + jump_y) ^ cell_y) & leaves_x_mask);
   const int gone = !(leaves < walk.length) | (static_cast<unsigned>(next_col) >= static_cast<unsigned>(width_)) |
                    (static_cast<unsigned>(next_row) >= static_cast<unsigned>(height_));
   const int status = hit != 0 ? kHit : (gone != 0 ? kGone : kWalking);
