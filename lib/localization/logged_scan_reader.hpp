@@ -28,6 +28,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -43,6 +44,11 @@ struct LoggedScanReaderOptions {
   bool strict = false;
   // For logs that do not say (Player logs): CARMEN's SICK LMS maximum.
   double default_max_range = 80.0;
+  // Player logs: called with every truth:<laser_index> sample at its own time
+  // (on the log's clock), paired with a scan or not. A simulator's truth
+  // device publishes every step; a recording may keep a scan and miss the
+  // truth of its moment, and the scan then carries an older one.
+  std::function<void(double time, const geometry::Pose2& pose)> on_truth{};
 };
 
 class LoggedScanSource;  // one per format, internal

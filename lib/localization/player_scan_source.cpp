@@ -136,6 +136,7 @@ class PlayerScanSource final : public LoggedScanSource {
       }
     } else {
       latest_truth_ = pose;
+      if (options_.on_truth) options_.on_truth(clock_->time_of(ordinal, data.data_time.seconds()), pose);
       if (at_scan_time && !pending_->truth_at_scan_time) {
         pending_->scan.truth = pose;
         pending_->truth_at_scan_time = true;

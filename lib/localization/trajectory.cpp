@@ -1,5 +1,6 @@
 #include "localization/trajectory.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -113,12 +114,17 @@ void write_trajectory_csv(std::ostream& out, const Trajectory& trajectory) {
 }
 
 Trajectory truth_from_log(const std::filesystem::path& log, LoggedScanReaderOptions options) {
+  Trajectory samples;
+  options.on_truth = [&samples](double time, const geometry::Pose2& pose) { samples.push_back({time, pose}); };
   LoggedScanReader reader(log, options);
-  Trajectory truth;
+  Trajectory by_scan;
   while (auto scan = reader.next()) {
-    if (scan->truth) truth.push_back({scan->time, *scan->truth});
+    if (scan->truth) by_scan.push_back({scan->time, *scan->truth});
   }
-  return truth;
+  if (reader.format() != log::LogFormat::kPlayer || reader.clock().synthetic() || samples.empty()) return by_scan;
+  std::stable_sort(samples.begin(), samples.end(),
+                   [](const TimedPose& a, const TimedPose& b) { return a.time < b.time; });
+  return samples;
 }
 
 }  // namespace playerkit::localization

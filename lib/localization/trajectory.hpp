@@ -35,8 +35,13 @@ Trajectory read_trajectory_csv(const std::filesystem::path& path);
 // "time,x,y,yaw" and one row per pose (9 decimals: nanoseconds, nanometres).
 void write_trajectory_csv(std::ostream& out, const Trajectory& trajectory);
 
-// The true poses of a log's scans, at the scans' times (scans without truth
-// are left out). Throws what LoggedScanReader throws.
+// The true poses of a log: in a Player log with usable times, every truth
+// sample (truth:<laser_index>) at its own time, in time order, so an estimate
+// is judged against the truth of its moment even where a recording lost the
+// sample of a scan's time; otherwise (CARMEN, a log without usable times,
+// whose estimates are matched by scan order) the scans' true poses at the
+// scans' times, scans without truth left out. Throws what LoggedScanReader
+// throws.
 Trajectory truth_from_log(const std::filesystem::path& log, LoggedScanReaderOptions options = {});
 
 }  // namespace playerkit::localization
