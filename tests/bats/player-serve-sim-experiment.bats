@@ -1,88 +1,48 @@
 #!/usr/bin/env bats
-# The experiment end to end, with the tools a user has: player-serve -s
-# simulates data/worlds/simple.world (Player 1.5's cave, one Pioneer with a
-# laser) ten times faster than real time, player-send drives the robot round
-# a loop with position goals, player-log record records odometry, laser and
-# the simulator's truth, and amcl-offline localizes the recording on the
-# world's own bitmap, given as Player 1.5 users gave it to amcl (cave.pnm,
-# 0.03 m a pixel, negated), placed where the world put it (its bottom-left
-# corner at 0,0).
+# The experiment end to end, with the tools a user has (scripts/sim-experiment,
+# as README.md shows it and scripts/demo runs it): player-serve -s simulates
+# data/worlds/simple.world (Player 1.5's cave, one Pioneer with a laser) five
+# times faster than real time, player-send drives the robot round a loop with
+# position goals, player-log record records odometry, laser and the
+# simulator's truth, and amcl-offline localizes the recording on the world's
+# own bitmap, given as Player 1.5 users gave it to amcl (cave.pnm, 0.03 m a
+# pixel, negated), placed where the world put it (its bottom-left corner at
+# 0,0). Then --picture, and determinism across speedups.
 
 load helpers
 
 worlds="$repo_root/data/worlds"
 
 teardown() {
-  kill_left_running "${recorder_pid:-}" "${server_pid:-}"
+  kill_left_running "${server_pid:-}"
 }
 
-# truth_mm: the robot's true x and y in mm, "X Y".
-truth_mm() {
-  "$player_cat" "127.0.0.1:$server_port" --once truth:0 --format json |
-    python3 -c 'import json, sys; d = json.load(sys.stdin)["data"]; print(d["px"], d["py"])'
-}
-
-# go_to X_MM Y_MM YAW_DEG: a position goal (Stage's go-to: turn, then drive
-# at 0.4 m/s), then wait until the truth is within 5 cm of it.
-go_to() {
-  "$player_send" "127.0.0.1:$server_port" position:0 cmd xpos="$1" ypos="$2" yaw="$3" type=1 >/dev/null
-  local x y
-  for _ in $(seq 1 300); do
-    read -r x y < <(truth_mm)
-    [ $(((x - $1) * (x - $1) + (y - $2) * (y - $2))) -lt 2500 ] && return 0
-    sleep 0.05
-  done
-  echo "the robot did not reach $1,$2: it is at $x,$y" >&2
-  return 1
-}
-
-@test "a loop in the cave, recorded and localized by amcl-offline within 5 cm of the simulator's truth" {
-  start_server "$BATS_TEST_TMPDIR/serve.log" -s "$worlds/simple.world" -p 0 --bind 127.0.0.1 \
-    --speedup 10 --seed 1 --picture "$BATS_TEST_TMPDIR/run.png"
-  # Odometry in the world's frame (it starts at 0,0,0 where the robot stands: 2 m, 2 m, 45 degrees).
-  run "$player_send" "127.0.0.1:$server_port" position:0 req set-odom x=2000 y=2000 theta=45
+@test "scripts/sim-experiment: a loop in the cave, recorded and localized within 5 cm of the simulator's truth" {
+  tools="$build_dir/tools"
+  run env PATH="$tools/player-serve:$tools/player-send:$tools/player-cat:$tools/player-log:$tools/amcl-offline:$PATH" \
+    OUT="$BATS_TEST_TMPDIR/experiment" "$repo_root/scripts/sim-experiment"
   [ "$status" -eq 0 ]
-  # 100 data rounds a second: at ten times real time the world steps 100 times a second.
-  "$player_log" record "127.0.0.1:$server_port" position:0 laser:0 truth:0 --frequency 100 \
-    -o "$BATS_TEST_TMPDIR/run.log" 2>"$BATS_TEST_TMPDIR/record.log" &
-  recorder_pid=$!
-  for _ in $(seq 1 50); do [ -s "$BATS_TEST_TMPDIR/run.log" ] && break; sleep 0.1; done
-  # Round the box in the middle of the cave's south half: 23 m, about 80 s of simulation.
-  go_to 10800 2000 90
-  go_to 10800 6100 180
-  go_to 4600 6100 -90
-  go_to 4600 2000 0
-  go_to 10800 2000 90
-  kill -INT "$recorder_pid"
-  wait_for_exit "$recorder_pid"
-  [ "$exit_status" -eq 0 ]
-  # The picture of the run: written when the server stops.
-  kill -TERM "$server_pid"
-  wait_for_exit "$server_pid"
-  [ "$exit_status" -eq 0 ]
-  [ "$(head -c 8 "$BATS_TEST_TMPDIR/run.png" | od -An -tx1 | tr -d ' ')" = 89504e470d0a1a0a ]
-  grep -q "wrote the picture $BATS_TEST_TMPDIR/run.png" "$BATS_TEST_TMPDIR/serve.log"
-
-  run "$player_log" info "$BATS_TEST_TMPDIR/run.log" --json
+  [[ "$output" == *"all "* ]]
+  cd "$BATS_TEST_TMPDIR/experiment"
+  # A scan every 0.2 s of about 65 s of simulation, nearly all kept.
+  run "$player_log" info run.log --json
   [ "$status" -eq 0 ]
   scans=$(printf '%s' "$output" | python3 -c 'import json, sys; print(json.load(sys.stdin)["devices"]["laser:0"]["count"])')
-  [ "$scans" -gt 300 ]  # a scan every 0.2 s of simulation, nearly all kept
-
-  # The beam model ray-casts the map as the simulator does; the likelihood
-  # field's distance to occupied cell centres reads walls half a 3 cm cell off.
-  run "$amcl_offline" localize "$BATS_TEST_TMPDIR/run.log" --map "$worlds/cave.pnm" --scale 0.03 --negate \
-    --origin 0,0 --init-pose truth --model beam --sigma-hit 0.05 -o "$BATS_TEST_TMPDIR/estimate.csv"
-  [ "$status" -eq 0 ]
-  run "$amcl_offline" eval "$BATS_TEST_TMPDIR/estimate.csv" --truth "$BATS_TEST_TMPDIR/run.log" --json
+  [ "$scans" -gt 250 ]
+  run "$amcl_offline" eval estimate.csv --truth run.log --json
   [ "$status" -eq 0 ]
   printf '%s' "$output" | python3 -c '
 import json, sys
 result = json.load(sys.stdin)
 rmse = result["all"]["position_rmse_m"]
-print("position RMSE %.3f m over %d estimates" % (rmse, result["matched"]), file=sys.stderr)
-assert result["matched"] == result["estimates"], result
+print("position RMSE %.3f m over %d of %d estimates" % (rmse, result["matched"], result["estimates"]), file=sys.stderr)
+# An estimate whose moment lies in a gap of over 1 s of lost truth samples is unmatched.
+assert result["matched"] >= 0.9 * result["estimates"], result
 assert rmse < 0.05, rmse
 assert result["all"]["heading_rmse_rad"] < 0.035, result'
+  # The picture of the run, written when the server stopped.
+  [ "$(head -c 8 run.png | od -An -tx1 | tr -d ' ')" = 89504e470d0a1a0a ]
+  grep -q "wrote the picture run.png" serve.log
 }
 
 @test "--picture: written on the simulation device's byte 3 (a command, or a request answered once written) and at the end" {
