@@ -49,11 +49,11 @@ struct ServedWorld {
     options.port = 0;
     options.bind_address = "127.0.0.1";
     options.log_level = core::LogLevel::kError;
-    options.simulation = daemon::SimulationOptions{.world = std::string(PLAYERKIT_WORLDS_DIR) + "/simple.world",
-                                                   .speedup = speedup,
-                                                   .seed = 0,
-                                                   .sim_time = std::nullopt,
-                                                   .paused = paused};
+    daemon::SimulationOptions simulation;
+    simulation.world = std::string(PLAYERKIT_WORLDS_DIR) + "/simple.world";
+    simulation.speedup = speedup;
+    simulation.paused = paused;
+    options.simulation = simulation;
     return options;
   }
 
