@@ -1,9 +1,9 @@
 #include "config/lexer.hpp"
 
-#include <cstdio>
 
 #include "config/errors.hpp"
 #include "config/limits.hpp"
+#include "text/printable.hpp"
 
 namespace playerkit::config {
 namespace {
@@ -18,14 +18,6 @@ bool is_word_char(char c) {
 }
 bool is_number_char(char c) { return is_digit(c) || c == '+' || c == '-' || c == '.'; }
 bool is_line_break(char c) { return c == '\n' || c == '\r'; }
-
-std::string describe_character(char c) {
-  const auto byte = static_cast<unsigned char>(c);
-  if (byte >= 0x20 && byte < 0x7F) return std::string("character '") + c + "'";
-  char hex[8];
-  std::snprintf(hex, sizeof hex, "0x%02X", byte);
-  return std::string("byte ") + hex;
-}
 
 class Lexer {
  public:
@@ -60,7 +52,7 @@ class Lexer {
       } else if (c == ']') {
         tokens.push_back(single(TokenKind::CloseBracket, "]"));
       } else {
-        throw ConfigError(here(), "syntax error: unexpected " + describe_character(c));
+        throw ConfigError(here(), "syntax error: unexpected " + text::describe_character(c));
       }
     }
     tokens.push_back(Token{TokenKind::EndOfFile, "", here()});

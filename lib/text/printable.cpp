@@ -111,4 +111,12 @@ std::string excerpt(std::string_view text, std::size_t max_bytes) {
   return shown;
 }
 
+std::string describe_character(char c) {
+  const auto byte = static_cast<unsigned char>(c);
+  if (byte >= 0x20 && byte < 0x7F) return std::string("character '") + c + "'";
+  char hex[8];
+  std::snprintf(hex, sizeof hex, "0x%02X", byte);
+  return std::string("byte ") + hex;
+}
+
 }  // namespace playerkit::text

@@ -28,4 +28,8 @@ std::string printable(std::string_view text);
 // escape), with "…" appended when something was cut.
 std::string excerpt(std::string_view text, std::size_t max_bytes = kMaxExcerptBytes);
 
+// One character a lexer did not expect, for its syntax error: "character ','"
+// when printable ASCII, else "byte 0x1B".
+std::string describe_character(char c);
+
 }  // namespace playerkit::text

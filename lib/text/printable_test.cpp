@@ -57,5 +57,12 @@ TEST(Excerpt, NeverCutsAnEscapeOrACharacter) {
   EXPECT_EQ(excerpt("ab\xc3\xa9" "cd", 4), "ab\xc3\xa9\u2026");
 }
 
+TEST(DescribeCharacter, QuotesPrintableAsciiAndNamesOtherBytesInHex) {
+  EXPECT_EQ(describe_character(','), "character ','");
+  EXPECT_EQ(describe_character('\x1b'), "byte 0x1B");
+  EXPECT_EQ(describe_character('\x7f'), "byte 0x7F");
+  EXPECT_EQ(describe_character(static_cast<char>(0xC3)), "byte 0xC3");
+}
+
 }  // namespace printable_test
 }  // namespace playerkit::text

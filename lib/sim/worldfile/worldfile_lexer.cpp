@@ -1,6 +1,5 @@
 #include "sim/worldfile/worldfile_lexer.hpp"
 
-#include <cstdio>
 
 #include "sim/worldfile/worldfile_error.hpp"
 #include "text/printable.hpp"
@@ -18,14 +17,6 @@ bool is_world_word_char(char c) {
 bool is_world_number_char(char c) { return is_world_digit(c) || c == '+' || c == '-' || c == '.'; }
 bool is_world_line_break(char c) { return c == '\n' || c == '\r'; }
 bool is_world_blank(char c) { return c == ' ' || c == '\t'; }
-
-std::string describe_world_character(char c) {
-  const auto byte = static_cast<unsigned char>(c);
-  if (byte >= 0x20 && byte < 0x7F) return std::string("character '") + c + "'";
-  char hex[8];
-  std::snprintf(hex, sizeof hex, "0x%02X", byte);
-  return std::string("byte ") + hex;
-}
 
 class WorldLexer {
  public:
@@ -63,7 +54,7 @@ class WorldLexer {
         out_.push_back(Token{kind, std::string(1, c), here()});
         advance();
       } else {
-        std::string message = "syntax error: unexpected " + describe_world_character(c);
+        std::string message = "syntax error: unexpected " + text::describe_character(c);
         if (c == ',') message += " (the values of a tuple are separated by spaces, not commas)";
         if (c == '{' || c == '}') message += " (entities are written with '(' and ')')";
         throw WorldFileError(here(), message);
