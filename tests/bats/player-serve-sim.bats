@@ -59,12 +59,17 @@ for line in sys.stdin:
 
 @test "example-13.world (Stage 1.3): each robot on its own port, as Player 1.5 served them" {
   # The world names ports 6665 and 6666: a copy names two that are free now.
-  first=$(free_port)
-  second=$(free_port)
+  # Both drawn at once, so they differ; -p 0 might still draw one of them
+  # after they are let go, so -p gets a third of the same draw.
+  read -r first second third < <(python3 -c '
+import socket
+held = [socket.socket() for _ in range(3)]
+for s in held: s.bind(("127.0.0.1", 0))
+print(*(s.getsockname()[1] for s in held))')
   cp "$worlds/cave.pnm" "$BATS_TEST_TMPDIR/"
   sed -e "s/port 6665/port $first/" -e "s/port 6666/port $second/" "$worlds/example-13.world" \
     > "$BATS_TEST_TMPDIR/example-13.world"
-  serve_world "$BATS_TEST_TMPDIR/example-13.world"
+  start_server "$BATS_TEST_TMPDIR/log" -s "$BATS_TEST_TMPDIR/example-13.world" -p "$third" --bind 127.0.0.1
   run "$player_cat" "127.0.0.1:$first" --list
   [ "$status" -eq 0 ]
   [[ "$output" == *"fiducial:0 fiducialfinder"* ]]
@@ -77,7 +82,7 @@ for line in sys.stdin:
   run "$player_cat" "127.0.0.1:$second" --once truth:0 --field px --field py
   [[ "$output" == *"px=4000 py=2000"* ]]
   # The simulation device is on the -p port.
-  run "$player_cat" "127.0.0.1:$server_port" --list
+  run "$player_cat" "127.0.0.1:$third" --list
   [ "$output" = "simulation:0 simulation" ]
 }
 
