@@ -304,5 +304,31 @@ TEST_F(ReadlogTest, BurstGoesAsFastAsTheSlowestReaderAndDropsNothing) {
   device.unsubscribe();
 }
 
+TEST_F(ReadlogTest, BurstWaitsUntilSubscriptionsStopComingIn) {
+  ReadlogSettings settings;
+  settings.burst = true;
+  load("position:0 ( driver \"readlog\" )\nposition:1 ( driver \"readlog\" )\n", kFourLines, 1.0, settings);
+  position(0).readers().taken(7, 0);
+  position(1).readers().taken(7, 0);
+  ASSERT_TRUE(position(0).subscribe());
+  ASSERT_TRUE(waiting_for(500ms));
+  // A second subscription 400 ms later (a slow client) restarts the wait.
+  timer->set(400ms);
+  ASSERT_TRUE(position(1).subscribe());
+  timer->set(500ms);
+  ASSERT_TRUE(waiting_for(900ms));
+  EXPECT_EQ(position(0).latest_data()->sequence, 0u);
+  timer->set(900ms);
+  // Then the whole log goes out, and each device got its lines from the first.
+  ASSERT_TRUE(has_sequence(position(0), 3));
+  ASSERT_TRUE(has_sequence(position(1), 1));
+  const auto position0 = position(0).data_since(0);
+  ASSERT_EQ(position0.size(), 3u);
+  EXPECT_EQ(position0[0]->payload, position_payload(100));
+  EXPECT_EQ(position(1).latest_data()->payload, position_payload(150));
+  position(1).unsubscribe();
+  position(0).unsubscribe();
+}
+
 }  // namespace readlog_driver_test
 }  // namespace playerkit::drivers

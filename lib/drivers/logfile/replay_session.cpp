@@ -81,6 +81,7 @@ ReplaySession::~ReplaySession() {
 void ReplaySession::attach(core::Device& device, protocol::DeviceAddress logged) {
   std::lock_guard lock(targets_mutex_);
   targets_.push_back({&device, logged});
+  last_attach_ = timer_->now();
   if (!started_) {
     started_ = true;
     thread_ = std::jthread([this](std::stop_token stop) { run(stop); });
@@ -151,7 +152,7 @@ bool ReplaySession::replay_file(const std::stop_token& stop, std::uint64_t& serv
     ++served;
     if (options_.burst) {
       if (!settled_) {
-        if (!timer_->wait_until(pass_start_wall + options_.burst_settle, stop)) return false;
+        if (!wait_for_attachments_to_settle(stop)) return false;
         settled_ = true;
       }
       if (!wait_for_any_reader(stop)) return false;
@@ -205,6 +206,20 @@ void ReplaySession::deliver(const log::DataLine& line, const std::stop_token& st
   // a reader that leaves is forgotten before its device detaches.
   for (const Owed& entry : owed) {
     if (!entry.readers->wait_until_taken(entry.sequence, stop)) return;
+  }
+}
+
+bool ReplaySession::wait_for_attachments_to_settle(const std::stop_token& stop) {
+  // Measured from the last subscription, not the first: on a loaded machine a
+  // client's second subscription can come long after its first.
+  for (;;) {
+    nanoseconds quiet_until;
+    {
+      std::lock_guard lock(targets_mutex_);
+      quiet_until = last_attach_ + options_.burst_settle;
+    }
+    if (timer_->now() >= quiet_until) return true;
+    if (!timer_->wait_until(quiet_until, stop)) return false;
   }
 }
 

@@ -49,8 +49,9 @@ struct ReplayOptions {
   // share of the device's queue, so nothing is dropped however slow a client
   // is. Devices without a data queue, or without readers, do not hold it
   // back; when no attached device has a reader the replay pauses. The first
-  // line waits burst_settle after the first subscription, so that a client
-  // opening several devices one after the other gets each from the start.
+  // line waits until no device has been attached for burst_settle, so that a
+  // client opening several devices one after the other gets each from the
+  // start however slowly its subscriptions come in.
   bool burst = false;
   std::chrono::milliseconds burst_settle{500};
 };
@@ -98,6 +99,8 @@ class ReplaySession {
   void deliver(const log::DataLine& line, const std::stop_token& stop);
   // Burst: false when stopped while no attached device had a reader.
   bool wait_for_any_reader(const std::stop_token& stop);
+  // Burst: until burst_settle has passed since the last attach(); false when stopped.
+  bool wait_for_attachments_to_settle(const std::stop_token& stop);
 
   const ReplayOptions options_;
   const std::shared_ptr<core::ManualClock> clock_;
@@ -112,6 +115,7 @@ class ReplaySession {
   std::mutex targets_mutex_;  // held while publishing, so detach() waits for it
   std::vector<Target> targets_;
   bool started_ = false;  // under targets_mutex_
+  std::chrono::nanoseconds last_attach_{0};  // timer_ time of the last attach(), under targets_mutex_
   std::jthread thread_;   // last: stops before the rest goes
 };
 
