@@ -1,0 +1,68 @@
+// Every saved input of every fuzz target, replayed through the ordinary
+// build: the seeds of tests/fuzz/corpus/<target>/ and the inputs that once
+// crashed or hung, tests/fuzz/regressions/<target>/. A target that throws
+// fails the test naming the file; one that aborts (a broken invariant, a
+// sanitizer in a sanitized build) ends the program with the file named on
+// stderr just before.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "fuzz_targets.hpp"
+
+namespace replay_test {
+
+namespace fs = std::filesystem;
+using Target = int (*)(const std::uint8_t*, std::size_t);
+
+std::vector<fs::path> inputs_of(const std::string& target) {
+  std::vector<fs::path> files;
+  for (const char* kind : {"corpus", "regressions"}) {
+    const fs::path directory = fs::path(PLAYERKIT_FUZZ_DIR) / kind / target;
+    if (!fs::is_directory(directory)) continue;
+    for (const auto& entry : fs::directory_iterator(directory)) {
+      if (entry.is_regular_file()) files.push_back(entry.path());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::vector<std::uint8_t> read_bytes(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void replay(const std::string& name, Target target) {
+  const auto files = inputs_of(name);
+  ASSERT_FALSE(files.empty()) << "no saved input for " << name << " under " << PLAYERKIT_FUZZ_DIR;
+  for (const auto& file : files) {
+    const auto bytes = read_bytes(file);
+    std::cerr << "replaying " << file.string() << " (" << bytes.size() << " bytes)\n";
+    try {
+      EXPECT_EQ(target(bytes.data(), bytes.size()), 0) << file;
+    } catch (const std::exception& error) {
+      ADD_FAILURE() << file << ": " << error.what();
+    }
+  }
+}
+
+TEST(FuzzReplay, FrameReader) { replay("frame_reader", playerkit::fuzz::frame_reader); }
+TEST(FuzzReplay, ConfigParser) { replay("config_parser", playerkit::fuzz::config_parser); }
+TEST(FuzzReplay, PlayerLogReader) { replay("player_log_reader", playerkit::fuzz::player_log_reader); }
+TEST(FuzzReplay, CarmenLogReader) { replay("carmen_log_reader", playerkit::fuzz::carmen_log_reader); }
+TEST(FuzzReplay, MapYaml) { replay("map_yaml", playerkit::fuzz::map_yaml); }
+TEST(FuzzReplay, MapImage) { replay("map_image", playerkit::fuzz::map_image); }
+TEST(FuzzReplay, WorldFile) { replay("world_file", playerkit::fuzz::world_file); }
+TEST(FuzzReplay, P2osSip) { replay("p2os_sip", playerkit::fuzz::p2os_sip); }
+TEST(FuzzReplay, SickTelegram) { replay("sick_telegram", playerkit::fuzz::sick_telegram); }
+
+}  // namespace replay_test
