@@ -346,6 +346,7 @@ core::DriverSpec amcl_driver_spec() {
       {"map_file/laser_map", "filename", "(required)", "", "the map image (or a ROS .yaml)"},
       {"map_scale", "length", "0.05", "m", "metres per pixel of the image"},
       {"map_negate", "int", "0", "", "1: white is occupied"},
+      {"map_origin", "tuple", "(centred)", "m m", "where the image's bottom-left corner lies; [0 0] for a Stage 1.3 world"},
       {"position_index/odom_index", "int", "0", "", "the position device giving odometry"},
       {"laser_index", "int", "0", "", "the laser device"},
       {"laser_pose", "tuple", "[0 0 0]", "m m deg", "the laser on the robot"},

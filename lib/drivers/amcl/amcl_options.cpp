@@ -93,6 +93,16 @@ std::shared_ptr<const grid::OccupancyGrid> load_map_option(const config::Section
   load.resolution = section.read_length("map_scale", kDefaultMapScale);
   if (!(*load.resolution > 0.0)) fail(section, "map_scale", "must be greater than 0");
   load.negate = section.read_int("map_negate", 0) != 0;
+  // playerkit's addition: 1.5 centred every map on the world origin, which
+  // puts the estimate of a Stage 1.3 robot (its world starts at the bitmap's
+  // bottom-left corner) half a map away from its true pose.
+  if (section.has("map_origin")) {
+    if (section.tuple_size("map_origin") != 2) {
+      fail(section, "map_origin", "must be [x y]: where the image's bottom-left corner lies");
+    }
+    load.origin = Eigen::Vector2d(section.read_tuple_length("map_origin", 0, 0.0),
+                                  section.read_tuple_length("map_origin", 1, 0.0));
+  }
   try {
     auto grid = std::make_shared<grid::OccupancyGrid>(map::load_map(file, load));
     const auto cells = grid->cells();

@@ -49,6 +49,17 @@ TEST(AmclOptions, DefaultsFollowThe15Manual) {
   EXPECT_EQ(options.seed, 0u);
 }
 
+TEST(AmclOptions, TheMapIsCentredUnlessMapOriginPlacesItsCorner) {
+  // 500 pixels of 0.03 m: 1.5 put the corner at minus half the map.
+  EXPECT_EQ(options_of(kCave).map->origin(), Eigen::Vector2d(-7.5, -7.5));
+  // A Stage 1.3 world starts at the bitmap's bottom-left corner.
+  EXPECT_EQ(options_of(kCave + "map_origin [0 0]").map->origin(), Eigen::Vector2d(0.0, 0.0));
+  EXPECT_EQ(options_of(kCave + "map_origin [1 -2]").map->origin(), Eigen::Vector2d(1.0, -2.0));
+  const std::string error = error_of(kCave + "map_origin [1]");
+  EXPECT_NE(error.find("amcl: map_origin must be [x y]"), std::string::npos) << error;
+  EXPECT_EQ(error.rfind("test.cfg:1:", 0), 0u) << error;
+}
+
 TEST(AmclOptions, ReadsEveryOptionInConfigUnits) {
   const AmclOptions options = options_of(
       kCave +
