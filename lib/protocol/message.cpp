@@ -11,9 +11,14 @@ namespace playerkit::protocol {
 
 Timestamp Timestamp::from_seconds(double seconds) {
   if (!(seconds > 0)) return {};
+  constexpr Timestamp kLatest{kMaxSec, 999999};
+  // Casting a double of 2^32 or more to 32 bits is undefined (a fuzzed JSON
+  // time, or a header whose usec field is over a million, reached it).
+  if (!(seconds < 4294967296.0)) return kLatest;
   auto sec = static_cast<std::uint32_t>(std::floor(seconds));
   auto usec = static_cast<std::uint32_t>(std::llround((seconds - sec) * 1e6));
   if (usec >= 1000000) {
+    if (sec == kMaxSec) return kLatest;
     ++sec;
     usec -= 1000000;
   }

@@ -19,6 +19,11 @@ struct Timestamp {
   std::uint32_t sec = 0;
   std::uint32_t usec = 0;
 
+  // The latest time the header's fields hold.
+  static constexpr std::uint32_t kMaxSec = 0xFFFFFFFF;
+  static constexpr double kMaxSeconds = 4294967295.999999;
+  // Rounded to the microsecond. Below 0 (and NaN) gives 0; beyond kMaxSeconds
+  // (infinity included) gives {kMaxSec, 999999}, never a wrapped-around time.
   static Timestamp from_seconds(double seconds);
   [[nodiscard]] double seconds() const { return sec + usec * 1e-6; }
   friend auto operator<=>(const Timestamp&, const Timestamp&) = default;

@@ -24,7 +24,12 @@ Timestamp read_time(const nlohmann::json& j, const char* key) {
   const auto it = j.find(key);
   if (it == j.end()) return {};
   if (!it->is_number()) throw JsonError(std::string(key) + ": expected seconds, got " + it->dump());
-  return Timestamp::from_seconds(it->get<double>());
+  const double seconds = it->get<double>();
+  if (seconds > Timestamp::kMaxSeconds) {
+    throw JsonError(std::string(key) + ": " + it->dump() + " s is past the latest time a header holds (" +
+                    "4294967295.999999 s)");
+  }
+  return Timestamp::from_seconds(seconds);
 }
 
 }  // namespace

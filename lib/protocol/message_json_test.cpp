@@ -61,5 +61,13 @@ TEST(MessageJson, ClearErrors) {
   EXPECT_THROW(message_from_json(json::parse(R"({"type":"req","device":"laser","request":"fly"})")), JsonError);
 }
 
+TEST(MessageJson, TimesPastTheHeaderFieldsAreRefused) {
+  EXPECT_THROW(message_from_json(json::parse(R"({"type":"data","device":"power","time":4294967296.5})")), JsonError);
+  EXPECT_THROW(message_from_json(json::parse(R"({"type":"data","device":"power","timestamp":1e12})")), JsonError);
+  const Message latest =
+      message_from_json(json::parse(R"({"type":"data","device":"power","time":4294967295.999999})"));
+  EXPECT_EQ(latest.time(), (Timestamp{0xFFFFFFFF, 999999}));
+}
+
 }  // namespace message_json_test
 }  // namespace playerkit::protocol

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "protocol/banner.hpp"
 #include "protocol/errors.hpp"
 #include "protocol/interfaces.hpp"
@@ -66,6 +68,17 @@ TEST(Message, TimestampFromSecondsRoundsToMicroseconds) {
   EXPECT_EQ(Timestamp::from_seconds(1086000000.25), (Timestamp{1086000000, 250000}));
   EXPECT_EQ(Timestamp::from_seconds(1.9999996), (Timestamp{2, 0}));
   EXPECT_EQ(Timestamp::from_seconds(-1), (Timestamp{0, 0}));
+  EXPECT_EQ(Timestamp::from_seconds(4294967295.25), (Timestamp{4294967295, 250000}));
+}
+
+TEST(Message, TimestampFromSecondsStopsAtTheLatestHeaderTime) {
+  // A header with usec over a million reads as past 2^32 s (fuzz finding).
+  const double past = (Timestamp{0xFFFFFFFF, 0xFFFFFFFF}).seconds();
+  EXPECT_EQ(Timestamp::from_seconds(past), (Timestamp{0xFFFFFFFF, 999999}));
+  EXPECT_EQ(Timestamp::from_seconds(4294967295.9999999), (Timestamp{0xFFFFFFFF, 999999}));
+  EXPECT_EQ(Timestamp::from_seconds(1e300), (Timestamp{0xFFFFFFFF, 999999}));
+  EXPECT_EQ(Timestamp::from_seconds(std::numeric_limits<double>::infinity()), (Timestamp{0xFFFFFFFF, 999999}));
+  EXPECT_EQ(Timestamp::from_seconds(std::numeric_limits<double>::quiet_NaN()), (Timestamp{0, 0}));
   EXPECT_DOUBLE_EQ((Timestamp{12, 500000}).seconds(), 12.5);
 }
 
