@@ -139,6 +139,15 @@ has_raw_escape() {
   [ "${lines[0]}" = 'The following argument was not expected: --bo\x1b[2Jgus' ]
 }
 
+@test "every tool quotes an unknown flag back escaped, exit 2" {
+  for tool in "$player_cat" "$player_send" "$player_log" "$amcl_offline" "$build_dir/tools/drivers/player-drivers"; do
+    run --separate-stderr "$tool" $'--bo\e[2Jgus'
+    [ "$status" -eq 2 ]
+    ! has_raw_escape "$stderr"
+    [[ "$stderr" == *'--bo\x1b[2Jgus'* ]]
+  done
+}
+
 @test "player-serve -r with a missing log fails before listening, naming the file" {
   run timeout 20 "$player_serve" -p 0 -r "$BATS_TEST_TMPDIR/nonexistent.log" "$repo_root/data/config/replay.cfg"
   [ "$status" -eq 2 ]

@@ -4,6 +4,7 @@
 #include <iostream>
 #include <unistd.h>
 
+#include "parse_errors.hpp"
 #include "commands.hpp"
 #include "plan_command.hpp"
 #include "stop_signals.hpp"
@@ -143,7 +144,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? offline::kExitOk : offline::kExitUsage;
+    return playerkit::tools::report_parse_error(app, e, std::cerr);
   }
   playerkit::tools::ignore_broken_pipes();
   if (map_app->parsed()) return guarded([&] { return offline::run_map(offline::make_map_options(map), std::cerr); });

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <string>
 
+#include "parse_errors.hpp"
 #include "core/plugin.hpp"
 #include "daemon/serve.hpp"
 #include "driver_listing.hpp"
@@ -236,7 +237,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? drivers::kExitOk : drivers::kExitUsage;
+    return playerkit::tools::report_parse_error(app, e, std::cerr);
   }
 
   try {

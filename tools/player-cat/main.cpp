@@ -4,6 +4,7 @@
 #include <iostream>
 #include <string>
 
+#include "parse_errors.hpp"
 #include "cat.hpp"
 #include "stop_signals.hpp"
 #include "cat_options.hpp"
@@ -92,7 +93,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? cat::kExitOk : cat::kExitUsage;
+    return playerkit::tools::report_parse_error(app, e, std::cerr);
   }
 
   cat::CatOptions options;

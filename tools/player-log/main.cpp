@@ -5,6 +5,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "parse_errors.hpp"
 #include "log/log_parse_error.hpp"
 #include "log_convert.hpp"
 #include "log_info.hpp"
@@ -137,7 +138,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? plog::kExitOk : plog::kExitUsage;
+    return playerkit::tools::report_parse_error(app, e, std::cerr);
   }
 
   plog::Progress progress(std::cerr, isatty(STDERR_FILENO) == 1);

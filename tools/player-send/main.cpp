@@ -12,6 +12,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "parse_errors.hpp"
 #include "catalog_help.hpp"
 #include "client/client.hpp"
 #include "client/endpoint.hpp"
@@ -172,7 +173,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : player_send::to_int(ExitCode::kUsage);
+    return playerkit::tools::report_parse_error(app, e, std::cerr);
   }
   if (arguments.list) return print_catalog(*arguments.list);
 
