@@ -8,6 +8,7 @@
 
 #include "formatters.hpp"
 #include "log/carmen_log_writer.hpp"
+#include "log/log_clock_reader.hpp"
 #include "log/log_conversion.hpp"
 #include "log/log_input.hpp"
 #include "log/log_line.hpp"
@@ -118,6 +119,11 @@ void run_cut(const CutOptions& options, std::ostream& out, std::ostream& err, Pr
   if (detect_log_format(options.input) != LogFormat::kPlayer) {
     throw std::runtime_error(options.input + " is a CARMEN log; cut reads Player logs (convert it first)");
   }
+  // The window is measured on the log's clock: file order on a synthetic
+  // clock when its times are unusable (warned once on stderr), as every
+  // reader sees it. Lines are still copied as they are.
+  const auto clock = log::audit_log_times(options.input);
+  std::size_t ordinal = 0;  // sync and data lines so far: the clock's ordinals
   auto in = log::open_log_input(options.input);
   OutputFile output(options.output, out, {options.input});
   auto& stream = output.stream();
@@ -152,11 +158,11 @@ void run_cut(const CutOptions& options, std::ostream& out, std::ostream& err, Pr
     }
     double time = 0;
     if (const auto* data = std::get_if<log::DataLine>(&line)) {
-      time = data->server_time.seconds();
+      time = clock->time_of(ordinal++, data->server_time.seconds());
       if (!first_time) first_time = time;
       if (!options.devices.empty() && (!data->device || !wanted(options.devices, *data->device))) continue;
     } else if (const auto* sync = std::get_if<log::SyncLine>(&line)) {
-      time = sync->server_time.seconds();
+      time = clock->time_of(ordinal++, sync->server_time.seconds());
       if (!first_time) first_time = time;
     } else {
       continue;  // blank and comment lines

@@ -13,6 +13,7 @@
 #include <variant>
 
 #include "log/carmen_log_reader.hpp"
+#include "log/log_clock_reader.hpp"
 #include "log/log_input.hpp"
 #include "log/text_log_reader.hpp"
 #include "log_info.hpp"
@@ -130,6 +131,31 @@ TEST(Cut, KeepsTheWindowAndTheDevicesByteForByte) {
   run_cut(cut_options(temp("cut-in.log"), 1.0, std::nullopt, {{protocol::kPositionCode, 0}}), out, err, progress);
   EXPECT_EQ(out.str(), header + lines[2] + "\n" + lines[3] + "\n" + lines[4] + "\n");
   EXPECT_THROW(run_cut(cut_options(kIntel.string(), std::nullopt, std::nullopt), out, err, progress), std::runtime_error);
+}
+
+TEST(Cut, ALogWithoutUsableTimesIsCutInFileOrderOnTheSyntheticClock) {
+  // Every line stamped 0 (as Radish's Orebro log): 1.5 would keep all or
+  // nothing; the window is taken on the 10 Hz clock every reader uses.
+  std::string text = "## Player version 1.5 \n## File version 0.0.0 \n";
+  std::vector<std::string> lines;
+  for (int i = 0; i < 30; ++i) {
+    lines.push_back("0000000000.000 h 6665 position 00 0000000000.000 +" + std::to_string(i) +
+                    ".000 +0.000 +0.000 +0.000 +0.000 +0.000 0");
+    text += lines.back() + "\n";
+  }
+  testing::ScratchDirectory scratch("log_convert_test");
+  const auto input = scratch.write("zero.log", text);
+  std::vector<std::string> warnings;
+  const auto previous = log::set_log_clock_warning_handler([&](const std::string& w) { warnings.push_back(w); });
+  std::ostringstream out, err;
+  Progress progress(err, false);
+  run_cut(cut_options(input.string(), 0.95, 2.05), out, err, progress);
+  log::set_log_clock_warning_handler(previous);
+  std::string expected = "## Player version 1.5 \n## File version 0.0.0 \n";
+  for (int i = 10; i <= 20; ++i) expected += lines[static_cast<std::size_t>(i)] + "\n";
+  EXPECT_EQ(out.str(), expected);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("synthetic 10 Hz clock"), std::string::npos) << warnings[0];
 }
 
 std::vector<std::string> directory_entries(const std::filesystem::path& directory) {
