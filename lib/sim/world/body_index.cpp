@@ -52,15 +52,12 @@ void BodyIndex::cover(const Eigen::Vector2d& low, const Eigen::Vector2d& high) {
   rebuild(low, high);
 }
 
-BodyIndex::CellRange BodyIndex::range_of(const IndexedBody& body) const {
+BodyIndex::CellRange BodyIndex::range_around(const Eigen::Vector2d& centre, double radius) const {
   const auto cell_of = [this](double coordinate, double low) {
     return static_cast<int>(std::clamp(std::floor((coordinate - low) / cell_size_), -1.0e9, 1.0e9));
   };
-  const PlacedBody& shape = body.shape;
-  return {cell_of(shape.centre.x() - shape.bounding_radius, low_.x()),
-          cell_of(shape.centre.y() - shape.bounding_radius, low_.y()),
-          cell_of(shape.centre.x() + shape.bounding_radius, low_.x()),
-          cell_of(shape.centre.y() + shape.bounding_radius, low_.y())};
+  return {cell_of(centre.x() - radius, low_.x()), cell_of(centre.y() - radius, low_.y()),
+          cell_of(centre.x() + radius, low_.x()), cell_of(centre.y() + radius, low_.y())};
 }
 
 void BodyIndex::put(ModelId id, const IndexedBody& body) {

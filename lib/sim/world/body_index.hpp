@@ -89,7 +89,14 @@ class BodyIndex {
   [[nodiscard]] std::size_t cell_index(int col, int row) const {
     return static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) + static_cast<std::size_t>(col);
   }
-  [[nodiscard]] CellRange range_of(const IndexedBody& body) const;
+  // The cells a disc touches, not clipped to the grid.
+  [[nodiscard]] CellRange range_around(const Eigen::Vector2d& centre, double radius) const;
+  [[nodiscard]] CellRange range_of(const IndexedBody& body) const {
+    return range_around(body.shape.centre, body.shape.bounding_radius);
+  }
+  // visit_cell(index) for every grid cell the disc touches.
+  template <typename VisitCell>
+  void for_cells_near(const Eigen::Vector2d& centre, double radius, VisitCell&& visit_cell) const;
   [[nodiscard]] bool on_grid(const CellRange& range) const {
     return range.col0 >= 0 && range.row0 >= 0 && range.col1 < columns_ && range.row1 < rows_;
   }
@@ -179,39 +186,30 @@ void BodyIndex::near_solid(const Eigen::Vector2d& centre, double radius, Visit&&
                    .reach = std::numeric_limits<float>::infinity(),  // the exact test decides
                    .ranger_visible = indexed.ranger_visible});
   }
-  if (columns_ == 0) return;
-  const auto clamped = [this](double coordinate, double low, int count) {
-    const double cells = std::floor((coordinate - low) / cell_size_);
-    return static_cast<int>(std::clamp(cells, -1.0, static_cast<double>(count)));
-  };
-  const int col0 = std::max(clamped(centre.x() - radius, low_.x(), columns_), 0);
-  const int col1 = std::min(clamped(centre.x() + radius, low_.x(), columns_), columns_ - 1);
-  const int row0 = std::max(clamped(centre.y() - radius, low_.y(), rows_), 0);
-  const int row1 = std::min(clamped(centre.y() + radius, low_.y(), rows_), rows_ - 1);
-  for (int row = row0; row <= row1; ++row) {
-    for (int col = col0; col <= col1; ++col) {
-      for (const CellSlot& slot : solid_cells_[cell_index(col, row)]) visit(slot);
-    }
-  }
+  for_cells_near(centre, radius, [&](std::size_t cell) {
+    for (const CellSlot& slot : solid_cells_[cell]) visit(slot);
+  });
 }
 
 template <typename Visit>
 void BodyIndex::near(const Eigen::Vector2d& centre, double radius, Visit&& visit) const {
   for (const ModelId id : oversized_) visit(id);
+  for_cells_near(centre, radius, [&](std::size_t cell) {
+    for (const CellSlot& slot : solid_cells_[cell]) visit(slot.id);
+    for (const ModelId id : point_cells_[cell]) visit(id);
+  });
+}
+
+template <typename VisitCell>
+void BodyIndex::for_cells_near(const Eigen::Vector2d& centre, double radius, VisitCell&& visit_cell) const {
   if (columns_ == 0) return;
-  const auto clamped = [this](double coordinate, double low, int count) {
-    const double cells = std::floor((coordinate - low) / cell_size_);
-    return static_cast<int>(std::clamp(cells, -1.0, static_cast<double>(count)));
-  };
-  const int col0 = std::max(clamped(centre.x() - radius, low_.x(), columns_), 0);
-  const int col1 = std::min(clamped(centre.x() + radius, low_.x(), columns_), columns_ - 1);
-  const int row0 = std::max(clamped(centre.y() - radius, low_.y(), rows_), 0);
-  const int row1 = std::min(clamped(centre.y() + radius, low_.y(), rows_), rows_ - 1);
+  const CellRange range = range_around(centre, radius);
+  const int col0 = std::max(range.col0, 0);
+  const int col1 = std::min(range.col1, columns_ - 1);
+  const int row0 = std::max(range.row0, 0);
+  const int row1 = std::min(range.row1, rows_ - 1);
   for (int row = row0; row <= row1; ++row) {
-    for (int col = col0; col <= col1; ++col) {
-      for (const CellSlot& slot : solid_cells_[cell_index(col, row)]) visit(slot.id);
-      for (const ModelId id : point_cells_[cell_index(col, row)]) visit(id);
-    }
+    for (int col = col0; col <= col1; ++col) visit_cell(cell_index(col, row));
   }
 }
 

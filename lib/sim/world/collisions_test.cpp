@@ -16,13 +16,7 @@ using world_test_support::object;
 using world_test_support::open_floor;
 using world_test_support::robot;
 using world_test_support::run;
-
-// A floor with a wall from x = 2.05 to 2.5 across it.
-grid::OccupancyGrid walled_floor() {
-  grid::OccupancyGrid map = open_floor();
-  fill_walls(map, 2.05, -10.0, 2.5, 10.0);
-  return map;
-}
+using world_test_support::walled_floor;
 
 TEST(Collisions, AWallStopsTheRobotWhereItLastFitAndSetsStall) {
   World world({.step = 0.1}, walled_floor());

@@ -10,19 +10,12 @@
 
 namespace playerkit::sim::world_test {
 
-using world_test_support::fill_walls;
 using world_test_support::mounted;
 using world_test_support::object;
 using world_test_support::open_floor;
 using world_test_support::robot;
 using world_test_support::run;
-
-// A floor with a wall from x = 2.05 to 2.5 across it.
-grid::OccupancyGrid walled_floor() {
-  grid::OccupancyGrid map = open_floor();
-  fill_walls(map, 2.05, -10.0, 2.5, 10.0);
-  return map;
-}
+using world_test_support::walled_floor;
 
 template <typename Call>
 std::string model_error_of(Call&& call) {

@@ -37,6 +37,13 @@ inline void fill_walls(grid::OccupancyGrid& map, double x0, double y0, double x1
   }
 }
 
+// open_floor() with a wall from x = 2.05 to 2.5 across it.
+inline grid::OccupancyGrid walled_floor() {
+  grid::OccupancyGrid map = open_floor();
+  fill_walls(map, 2.05, -10.0, 2.5, 10.0);
+  return map;
+}
+
 // A differential robot with a 0.4 x 0.4 m body.
 inline ModelSpec robot(const std::string& name, const geometry::Pose2& pose, PositionSpec position = {}) {
   ModelSpec spec;
