@@ -7,17 +7,12 @@
 
 #include <limits>
 
+#include "sim/world/world_test_support.hpp"
+
 namespace playerkit::sim::render {
 namespace trails_test {
 
-ModelSpec model(const std::string& name, ModelId parent, const geometry::Pose2& pose, ModelParams params) {
-  ModelSpec spec;
-  spec.name = name;
-  spec.parent = parent;
-  spec.pose = pose;
-  spec.params = std::move(params);
-  return spec;
-}
+using world_test_support::model;
 
 grid::OccupancyGrid floor_map() { return grid::OccupancyGrid::centred(100, 100, 0.1, grid::CellState::free); }
 

@@ -10,18 +10,12 @@
 #include <numbers>
 
 #include "sim/render/world_snapshot.hpp"
+#include "sim/world/world_test_support.hpp"
 
 namespace playerkit::sim::render {
 namespace world_picture_test {
 
-ModelSpec model(const std::string& name, ModelId parent, const geometry::Pose2& pose, ModelParams params) {
-  ModelSpec spec;
-  spec.name = name;
-  spec.parent = parent;
-  spec.pose = pose;
-  spec.params = std::move(params);
-  return spec;
-}
+using world_test_support::model;
 
 // A 4 x 4 m floor centred on the origin in 5 cm cells, with a wall filling
 // 1.5 <= x < 1.7 from bottom to top. At 1600 px a side: 400 px/m, so the

@@ -10,19 +10,13 @@
 
 #include "files/output_file.hpp"
 #include "files/same_file.hpp"
+#include "sim/world/world_test_support.hpp"
 #include "support/scratch_directory.hpp"
 
 namespace playerkit::sim::render {
 namespace world_png_test {
 
-ModelSpec model(const std::string& name, ModelId parent, const geometry::Pose2& pose, ModelParams params) {
-  ModelSpec spec;
-  spec.name = name;
-  spec.parent = parent;
-  spec.pose = pose;
-  spec.params = std::move(params);
-  return spec;
-}
+using world_test_support::model;
 
 World small_world() {
   auto map = grid::OccupancyGrid::centred(60, 40, 0.05, grid::CellState::free);  // 3 x 2 m

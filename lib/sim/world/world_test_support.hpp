@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "algorithms/geometry/pose2.hpp"
 #include "algorithms/grid/occupancy_grid.hpp"
@@ -52,6 +53,16 @@ inline ModelSpec robot(const std::string& name, const geometry::Pose2& pose, Pos
   spec.pose = pose;
   spec.body.size = {0.4, 0.4};
   spec.params = std::move(position);
+  return spec;
+}
+
+// Any model: `params` say what it is; the body keeps ModelSpec's defaults.
+inline ModelSpec model(const std::string& name, ModelId parent, const geometry::Pose2& pose, ModelParams params) {
+  ModelSpec spec;
+  spec.name = name;
+  spec.parent = parent;
+  spec.pose = pose;
+  spec.params = std::move(params);
   return spec;
 }
 
