@@ -10,6 +10,8 @@ namespace playerkit::core {
 
 RequestResult Driver::handle_request(const Request& /*request*/) { return RequestResult::nack(); }
 
+std::vector<DeviceKey> Driver::source_devices() const { return {}; }
+
 Device& Driver::device() const {
   assert(device_ != nullptr && "the driver is not attached to a device yet");
   return *device_;

@@ -33,6 +33,7 @@
 namespace playerkit::core {
 
 class Device;
+struct DeviceKey;
 
 // Throw from setup() to refuse a subscription; the client is granted 'e' and
 // the message is logged.
@@ -79,9 +80,15 @@ class Driver {
   // thread that is not the server's. The server then runs them off its event
   // loop, so that one slow device holds up only the clients that open it, and
   // answers the DEV request when setup() ends. A driver whose setup()
-  // subscribes to other devices must not say so: their setup() would run on
-  // that thread too.
+  // subscribes to other devices must not say so (their setup() would run on
+  // that thread too): it names them in source_devices() instead.
   [[nodiscard]] virtual bool setup_may_block() const { return false; }
+  // The devices setup() subscribes to (amcl's odometry and laser, writelog's
+  // sources). Before a client's DEV request sets this driver up, the server
+  // sets up off its event loop those of them whose setup may block, so that
+  // this setup() finds them running: a passthrough laser whose remote hangs
+  // holds up only the client opening amcl, not the server.
+  [[nodiscard]] virtual std::vector<DeviceKey> source_devices() const;
 
   // Hardware drivers: their link's counters (bytes, telegrams, checksum
   // errors, resyncs, timeouts, reconnects); empty for the others.

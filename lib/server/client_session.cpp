@@ -135,32 +135,49 @@ void ClientSession::handle_request(const protocol::Message& message) {
     handle_device_request(message);
     return;
   }
+  if (const std::optional<PlayerReply> reply = answer_or_set_up_first(message)) {
+    send_reply(reply->type, message.device(), reply->payload);
+    if (reply->schedule_changed) rearm_push_timer();
+    if (reply->round_requested) request_round();
+  }
+}
+
+std::optional<PlayerReply> ClientSession::answer_or_set_up_first(const protocol::Message& message) {
   if (context_.set_up_in_background) {
-    if (core::Device* device = device_to_set_up_first(state_, message.payload, context_.devices)) {
+    const SetupFirst first = device_to_set_up_first(state_, message.payload, context_.devices);
+    if (first.device != nullptr) {
       awaiting_setup_ = true;
       context_.set_up_in_background(
-          *device, [self = shared_from_this(), message, device](bool subscribed) {
-            self->finish_device_open(message, *device, subscribed);
+          *first.device, [self = shared_from_this(), message, first](bool subscribed) {
+            self->finish_device_open(message, *first.device, first.is_source, subscribed);
           });
-      return;
+      return std::nullopt;
     }
   }
-  PlayerReply reply = answer_player_request(state_, message.payload, context_.devices);
-  send_reply(reply.type, message.device(), reply.payload);
-  if (reply.schedule_changed) rearm_push_timer();
-  if (reply.round_requested) request_round();
+  return answer_player_request(state_, message.payload, context_.devices);
 }
 
 void ClientSession::finish_device_open(const protocol::Message& request, core::Device& device,
-                                       bool subscribed) {
+                                       bool is_source, bool subscribed) {
   awaiting_setup_ = false;
+  if (subscribed) held_for_open_.push_back(&device);
   std::optional<PlayerReply> reply;
   if (!closed_) {
-    reply = answer_device_request_after_setup(state_, request.payload, context_.devices, subscribed);
+    if (!is_source || !subscribed) {
+      // The device asked for is up (or refused), or a source of it refused:
+      // then the client gets 'e' without a second, blocking, attempt.
+      reply = answer_device_request_after_setup(state_, request.payload, context_.devices, subscribed);
+    } else {
+      // A source is up: the next one, or the device itself, which now sets
+      // up on the event loop without waiting (its sources are running).
+      reply = answer_or_set_up_first(request);
+      if (awaiting_setup_) return;
+    }
   }
-  // The setup's own subscription: the client holds its own by now (or none),
-  // and the count is right by the time the client reads its answer.
-  if (subscribed) device.unsubscribe_from_event_loop();
+  // The setups' own subscriptions: the client holds its own by now (or none),
+  // and the counts are right by the time the client reads its answer.
+  for (core::Device* held : held_for_open_) held->unsubscribe_from_event_loop();
+  held_for_open_.clear();
   if (reply) send_reply(reply->type, request.device(), reply->payload);
   handle_incoming();
   read_more();

@@ -33,6 +33,7 @@
 #include "core/device_table.hpp"
 #include "core/logger.hpp"
 #include "server/client_state.hpp"
+#include "server/player_requests.hpp"
 #include "protocol/frame_reader.hpp"
 #include "server/server_options.hpp"
 
@@ -82,7 +83,13 @@ class ClientSession : public std::enable_shared_from_this<ClientSession> {
   void handle_message(const protocol::Message& message);
   void handle_authentication(const protocol::Message& message);
   void handle_request(const protocol::Message& message);
-  void finish_device_open(const protocol::Message& request, core::Device& device, bool subscribed);
+  // The answer to a request to the `player` device, or nullopt when a DEV
+  // request first waits for a setup off the event loop (finish_device_open
+  // comes back to it).
+  std::optional<PlayerReply> answer_or_set_up_first(const protocol::Message& message);
+  // `device` (the one asked for, or one of its sources) was set up elsewhere.
+  void finish_device_open(const protocol::Message& request, core::Device& device, bool is_source,
+                          bool subscribed);
   void handle_device_request(const protocol::Message& message);
   void handle_command(const protocol::Message& message);
   void handle_oversize(const protocol::MessageHeader& header);
@@ -117,6 +124,10 @@ class ClientSession : public std::enable_shared_from_this<ClientSession> {
   // while a DEV request waits for its device's setup.
   std::deque<protocol::FrameEvent> incoming_;
   bool awaiting_setup_ = false;
+  // Devices a DEV request had set up off the event loop (it, or its sources
+  // one after the other), each held by its setup's subscription until the
+  // request is answered.
+  std::vector<core::Device*> held_for_open_;
 
   std::deque<std::vector<std::uint8_t>> output_;
   std::size_t output_bytes_ = 0;

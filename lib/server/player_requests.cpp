@@ -125,24 +125,41 @@ PlayerReply answer_player_request(ClientState& client, std::span<const std::uint
   }
 }
 
-core::Device* device_to_set_up_first(const ClientState& client,
-                                     std::span<const std::uint8_t> payload,
-                                     const core::DeviceTable& devices) {
+core::Device* blocking_setup_among(core::Device& device, const core::DeviceTable& devices) {
+  // Sources of sources count too; the depth bounds the search should a
+  // configuration name a cycle.
+  constexpr int kMaxSourceDepth = 4;
+  const auto search = [&devices](core::Device& candidate, int depth, const auto& self) -> core::Device* {
+    // A device already running is only counted in: its setup does not run again.
+    if (candidate.subscriptions() > 0) return nullptr;
+    if (candidate.driver().setup_may_block()) return &candidate;
+    if (depth == kMaxSourceDepth) return nullptr;
+    for (const core::DeviceKey& key : candidate.driver().source_devices()) {
+      core::Device* source = devices.find(key);
+      if (source == nullptr || source == &candidate) continue;
+      if (core::Device* found = self(*source, depth + 1, self)) return found;
+    }
+    return nullptr;
+  };
+  return search(device, 0, search);
+}
+
+SetupFirst device_to_set_up_first(const ClientState& client, std::span<const std::uint8_t> payload,
+                                  const core::DeviceTable& devices) {
   if (payload.size() < protocol::DeviceAccessRequest::kWireSize ||
       read_u16(payload, 0) != protocol::kPlayerDevReq) {
-    return nullptr;
+    return {};
   }
   const auto request = decode_padded<protocol::DeviceAccessRequest>(payload);
   const DeviceAddress address{request.code, request.index};
   core::Device* device = devices.find(client.port, address);
-  if (device == nullptr || !device->driver().setup_may_block() || device->subscriptions() > 0 ||
-      !is_access_letter(request.access)) {
-    return nullptr;
-  }
+  if (device == nullptr || !is_access_letter(request.access)) return {};
   const auto wanted = static_cast<Access>(request.access);
   const bool subscribes = SubscriptionTable::held_subscriptions(wanted) >
                           SubscriptionTable::held_subscriptions(client.subscriptions.access(address));
-  return subscribes ? device : nullptr;
+  if (!subscribes) return {};
+  core::Device* first = blocking_setup_among(*device, devices);
+  return {.device = first, .is_source = first != nullptr && first != device};
 }
 
 PlayerReply answer_device_request_after_setup(ClientState& client,

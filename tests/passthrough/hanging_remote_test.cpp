@@ -25,6 +25,7 @@
 #include "protocol/banner.hpp"
 #include "protocol/interfaces.hpp"
 #include "support/raw_client.hpp"
+#include "support/scratch_directory.hpp"
 #include "test_server.hpp"
 
 namespace playerkit::drivers {
@@ -195,6 +196,57 @@ TEST(PassthroughHangingRemote, OnlyTheClientOpeningItWaits) {
   EXPECT_GE(rounds_meanwhile, 0.7 * baseline_rate * window)
       << rounds_meanwhile << " rounds in " << window << " s; alone " << baseline_rate << " per second";
   EXPECT_TRUE(server.logged("cannot use laser:0 on the remote server 127.0.0.1:" + std::to_string(silent.port())));
+}
+
+// A driver built on a hanging passthrough (here writelog recording it; amcl
+// is the same) sets it up through the server too: the remote's setup runs off
+// the event loop first, so again only the client opening the recorder waits.
+TEST(PassthroughHangingRemote, ADriverBuiltOnItHoldsUpOnlyTheClientOpeningThatDriver) {
+  HangingRemote silent(Behaviour::kSilent);
+  playerkit::testing::ScratchDirectory scratch("hanging_remote_test");
+  const std::string config = "laser:0 ( driver \"source\" )\n" + passthrough_to(1, silent.port()) +
+                             "null:0 ( driver \"writelog\" filename \"" + scratch.file("run.log").string() +
+                             "\" devices [\"laser:1\"] )\n";
+  TestServer server(config, {}, 0, [](core::DriverRegistry& registry) { register_builtin_drivers(registry); });
+
+  RawClient watcher(server.port());
+  watcher.read_banner();
+  ASSERT_EQ(watcher.open(kWatched, 'r'), 'r');
+  ASSERT_EQ(watcher.set_frequency(kWatcherHz), MessageType::kAck);
+  const auto baseline_start = Clock::now();
+  const int baseline_rounds = count_rounds(watcher, [] { return false; }, kBaselineWindow);
+  const double baseline_rate =
+      baseline_rounds / std::chrono::duration<double>(Clock::now() - baseline_start).count();
+  ASSERT_GT(baseline_rounds, 0);
+
+  Open recorder{{protocol::kNullCode, 0}};
+  std::atomic<bool> opener_done{false};
+  std::string opener_error;
+  std::thread opener([&] {
+    try {
+      RawClient client(server.port());
+      client.read_banner();
+      const auto start = Clock::now();
+      recorder.granted = client.open(recorder.device, 'r');
+      recorder.took = Clock::now() - start;
+    } catch (const std::exception& e) {
+      opener_error = e.what();
+    }
+    opener_done = true;
+  });
+  const auto window_start = Clock::now();
+  const int rounds_meanwhile = count_rounds(watcher, [&] { return opener_done.load(); }, 30s);
+  const double window = std::chrono::duration<double>(Clock::now() - window_start).count();
+  opener.join();
+
+  ASSERT_EQ(opener_error, "");
+  // The recorder cannot record a device that never came up: 'e', once the
+  // remote's connect timeout has expired.
+  EXPECT_EQ(recorder.granted, 'e');
+  EXPECT_GE(recorder.took, PassthroughTimings{}.connect_timeout * 9 / 10);
+  EXPECT_LE(recorder.took, PassthroughTimings{}.connect_timeout + kAnswerMargin);
+  EXPECT_GE(rounds_meanwhile, 0.7 * baseline_rate * window)
+      << rounds_meanwhile << " rounds in " << window << " s; alone " << baseline_rate << " per second";
 }
 
 }  // namespace hanging_remote_test

@@ -58,6 +58,12 @@ void AmclDriver::check() {
   }
 }
 
+std::vector<core::DeviceKey> AmclDriver::source_devices() const {
+  const std::uint16_t port = device().key().port;
+  return {{port, {protocol::kPositionCode, static_cast<std::uint16_t>(options_.position_index)}},
+          {port, {protocol::kLaserCode, static_cast<std::uint16_t>(options_.laser_index)}}};
+}
+
 void AmclDriver::open() {
   const std::uint16_t port = device().key().port;
   core::Device* position =

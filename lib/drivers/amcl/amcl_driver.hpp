@@ -47,6 +47,8 @@ class AmclDriver final : public core::ThreadedDriver, private core::DeviceListen
   core::RequestResult handle_request(const core::Request& request) override;
   // Its position and laser devices exist (looked up again at set-up).
   void check() override;
+  // Its position and laser devices.
+  [[nodiscard]] std::vector<core::DeviceKey> source_devices() const override;
 
  protected:
   void open() override;

@@ -46,6 +46,7 @@ class WritelogDriver final : public core::ThreadedDriver, private core::DeviceLi
 
   // Every device to record exists (they are looked up again at set-up).
   void check() override;
+  [[nodiscard]] std::vector<core::DeviceKey> source_devices() const override { return source_keys_; }
 
  protected:
   void open() override;
