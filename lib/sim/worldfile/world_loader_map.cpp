@@ -60,6 +60,26 @@ bool wall_overlaps_cell(const std::array<Eigen::Vector2d, 4>& corners, const Eig
   return true;
 }
 
+// The x-extent of a turned wall within the band y0 <= y <= y1: its corners
+// inside the band and the points where its edges cross the band's lines.
+// Empty (low > high) when the wall misses the band.
+std::pair<double, double> x_extent_in_band(const std::array<Eigen::Vector2d, 4>& corners, double y0, double y1) {
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  const auto take = [&](double x) {
+    low = std::min(low, x);
+    high = std::max(high, x);
+  };
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const Eigen::Vector2d& a = corners[i];
+    const Eigen::Vector2d& b = corners[(i + 1) % corners.size()];
+    if (a.y() >= y0 && a.y() <= y1) take(a.x());
+    for (const double y : {y0, y1}) {
+      if ((a.y() - y) * (b.y() - y) < 0.0) take(a.x() + (y - a.y()) * (b.x() - a.x()) / (b.y() - a.y()));
+    }
+  }
+  return {low, high};
+}
+
 bool turned_by_right_angles(double yaw) {
   const double turn = std::fmod(std::abs(yaw), std::numbers::pi / 2.0);
   return turn < 1e-12 || std::numbers::pi / 2.0 - turn < 1e-12;
@@ -103,7 +123,20 @@ void mark_wall(grid::OccupancyGrid& grid, const WallRectangle& wall) {
   const long long row_begin = std::max(first_row, 0LL), row_end = std::min(last_row, grid.height() - 1LL);
   const bool axis_aligned = turned_by_right_angles(wall.centre.yaw);
   for (long long row = row_begin; row <= row_end; ++row) {
-    for (long long col = col_begin; col <= col_end; ++col) {
+    long long row_col_begin = col_begin, row_col_end = col_end;
+    if (!axis_aligned) {
+      // Only the cells under the wall's extent in this row, give or take one
+      // (the overlap test below decides): a long wall at 45 degrees has a
+      // bounding box of length^2 / 2 cells, and testing all of them took
+      // minutes on a large turned bitmap (found by fuzzing).
+      const double y0 = grid.origin().y() + static_cast<double>(row) * resolution;
+      const auto [x_low, x_high] = x_extent_in_band(corners, y0, y0 + resolution);
+      if (!(x_low <= x_high)) continue;
+      const auto [first, last] = overlapped_cells(x_low, x_high, grid.origin().x(), resolution);
+      row_col_begin = std::max(col_begin, first - 1);
+      row_col_end = std::min(col_end, last + 1);
+    }
+    for (long long col = row_col_begin; col <= row_col_end; ++col) {
       const int c = static_cast<int>(col), r = static_cast<int>(row);
       if (!axis_aligned) {
         const Eigen::Vector2d cell_low = grid.origin() + Eigen::Vector2d(static_cast<double>(col) * resolution,
