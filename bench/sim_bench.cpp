@@ -11,6 +11,8 @@
 //   sim_bench growth          robots x beams in the cave
 //   sim_bench --seconds 30    simulate longer (default 20 s each, and 1 s of wall time at least)
 //   sim_bench --only NAME     only the worlds of this name (one-laser, cave-100, ..., for a profiler)
+//   sim_bench --only cave-100 --write-world cave-100.world
+//                             write that world's file instead (bench/sim_server_load.sh serves it)
 //
 // Worlds are Stage 4 world text written here, on data/worlds' bitmaps (found
 // through PLAYERKIT_SOURCE_DIR, or the directory given with --worlds).
@@ -18,6 +20,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -114,7 +117,8 @@ std::vector<geometry::Pose2> free_poses(const grid::OccupancyGrid& map, int coun
   return poses;
 }
 
-sim::worldfile::LoadedWorld build_world(const Scenario& scenario, const fs::path& worlds) {
+// The scenario's world file: the floorplan, then its robots on free poses.
+std::string world_text(const Scenario& scenario, const fs::path& worlds) {
   using namespace sim::worldfile;
   const std::string floorplan = floorplan_text(scenario, worlds);
   const auto empty = describe_world_text(floorplan, scenario.name + ".world", worlds);
@@ -128,7 +132,11 @@ sim::worldfile::LoadedWorld build_world(const Scenario& scenario, const fs::path
     text << "bench_robot ( name \"r" << i << "\" pose [" << pose.x << ' ' << pose.y << " 0 "
          << pose.yaw * 180.0 / std::numbers::pi << "] )\n";
   }
-  return load_world_text(text.str(), scenario.name + ".world", worlds, {.seed = 7});
+  return text.str();
+}
+
+sim::worldfile::LoadedWorld build_world(const Scenario& scenario, const fs::path& worlds) {
+  return sim::worldfile::load_world_text(world_text(scenario, worlds), scenario.name + ".world", worlds, {.seed = 7});
 }
 
 struct Robot {
@@ -223,12 +231,15 @@ int main(int argc, char** argv) {
   bool goals = true;
   bool growth = true;
   std::string only;
+  std::string write_world;
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
     if (arg == "--seconds" && i + 1 < argc) {
       sim_seconds = std::atof(argv[++i]);
     } else if (arg == "--only" && i + 1 < argc) {
       only = argv[++i];
+    } else if (arg == "--write-world" && i + 1 < argc) {
+      write_world = argv[++i];
     } else if (arg == "--worlds" && i + 1 < argc) {
       worlds = argv[++i];
     } else if (arg == "goals") {
@@ -236,13 +247,22 @@ int main(int argc, char** argv) {
     } else if (arg == "growth") {
       goals = false;
     } else {
-      std::fprintf(stderr, "usage: sim_bench [goals|growth] [--seconds S] [--only WORLD] [--worlds DIR]\n");
+      std::fprintf(stderr,
+                   "usage: sim_bench [goals|growth] [--seconds S] [--only WORLD] [--worlds DIR]\n"
+                   "       sim_bench --only WORLD --write-world FILE\n");
       return 2;
     }
   }
-  print_header();
+  bool written = false;
+  if (write_world.empty()) print_header();
   const auto measure = [&](const Scenario& scenario) {
-    if (only.empty() || scenario.name == only) print_row(scenario, run(scenario, worlds, sim_seconds));
+    if (!only.empty() && scenario.name != only) return;
+    if (write_world.empty()) {
+      print_row(scenario, run(scenario, worlds, sim_seconds));
+    } else if (!written) {
+      std::ofstream(write_world) << world_text(scenario, worlds);
+      written = true;
+    }
   };
   if (goals) {
     const std::vector<Scenario> targets{
@@ -263,6 +283,10 @@ int main(int argc, char** argv) {
       const Scenario scenario{"hospital-growth", "stage-hospital_section.png", 140, 60, robots, 0, 12, 0};
       measure(scenario);
     }
+  }
+  if (!write_world.empty() && !written) {
+    std::fprintf(stderr, "sim_bench: --write-world needs --only with a scenario's name\n");
+    return 2;
   }
   return 0;
 }
