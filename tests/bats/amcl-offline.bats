@@ -51,6 +51,14 @@ assert math.degrees(d["heading_rmse_rad"]) < 3.0, d'
   # The same run again gives the same rows: seeded.
   "$amcl_offline" localize odom.log --map intel.yaml --init-pose truth -o again.csv 2>/dev/null
   cmp estimate.csv again.csv
+  # Both runs in one table, from their directory: a row each and one over all.
+  mkdir runs && cp estimate.csv again.csv runs/
+  run --separate-stderr "$amcl_offline" eval runs --truth "$intel" --format markdown
+  [ "$status" -eq 0 ]
+  [ "${#lines[@]}" -eq 5 ]
+  [ "${lines[0]}" = "| estimate | truth | matched | rmse_m | max_m | rmse_deg | max_deg | converged_s | lost |" ]
+  [[ "${lines[2]}" == "| runs/again.csv | $intel | 910/910 | "* ]]
+  [[ "${lines[4]}" == "| all 2 runs |  |  | "*" | 2/2 converged | "* ]]
 }
 
 @test "dead reckoning alone is far off: the perturbation is real" {

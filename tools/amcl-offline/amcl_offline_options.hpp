@@ -65,12 +65,6 @@ struct LocalizeCommand {
   bool progress = false;  // stderr is a terminal
 };
 
-struct EvalCommand {
-  std::string estimate;
-  std::string truth;  // a log, or a CSV with time,x,y,yaw
-  bool json = false;
-};
-
 struct MapOptions {
   std::string log;
   std::string output;  // .pgm; the .yaml goes beside it

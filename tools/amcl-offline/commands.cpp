@@ -102,47 +102,5 @@ int run_localize(const LocalizeOptions& options, std::ostream& out, std::ostream
   return kExitOk;
 }
 
-int run_eval(const EvalCommand& command, std::ostream& out, std::ostream& err) {
-  const auto estimate = localization::read_trajectory_csv(std::filesystem::path(command.estimate));
-  localization::Trajectory truth;
-  const bool truth_is_csv = std::filesystem::path(command.truth).extension() == ".csv";
-  truth = truth_is_csv ? localization::read_trajectory_csv(std::filesystem::path(command.truth))
-                       : localization::truth_from_log(command.truth);
-  if (truth.empty()) throw std::runtime_error(command.truth + ": no true poses (a log needs truth or corrected poses)");
-  // A log without usable times has only file order to pair by.
-  const bool by_scan_order = !truth_is_csv && log::audit_log_times(command.truth)->synthetic();
-  auto result = localization::evaluate_trajectory(
-      by_scan_order ? localization::retimed_by_scan_order(estimate, truth) : estimate, truth);
-  result.matched_by_scan_order = by_scan_order;
-  if (command.json) {
-    out << result.to_json() << "\n";
-    return kExitOk;
-  }
-  const auto row = [&](const char* name, const localization::ErrorStatistics& stats) {
-    out << std::left << std::setw(18) << name << std::right << std::fixed << std::setprecision(3) << std::setw(8)
-        << stats.position_rmse_m << std::setw(8) << stats.position_max_m << std::setprecision(2) << std::setw(9)
-        << stats.heading_rmse_rad / geometry::kRadiansPerDegree << std::setw(9) << stats.heading_max_rad / geometry::kRadiansPerDegree << std::setw(8)
-        << stats.count << "\n";
-  };
-  out << "matched " << result.matched << " of " << result.estimates << " estimates";
-  if (by_scan_order) out << " by scan order (" << command.truth << " has no usable times; seconds are file order)";
-  out << "\n";
-  out << std::left << std::setw(18) << "" << std::right << std::setw(8) << "rmse_m" << std::setw(8) << "max_m"
-      << std::setw(9) << "rmse_deg" << std::setw(9) << "max_deg" << std::setw(8) << "rows" << "\n";
-  row("all", result.all);
-  if (result.converged()) {
-    row("after convergence", result.after_convergence);
-    out << std::setprecision(1) << "converged after " << *result.convergence_time_s << " s";
-    if (result.convergence_distance_m) out << " and " << *result.convergence_distance_m << " m";
-    out << "; lost " << result.lost_episodes << " time(s) afterwards";
-    if (result.lost_episodes > 0) out << ", the longest for " << result.longest_lost_s << " s";
-    out << "\n";
-  } else {
-    out << "never converged (within " << result.options.converged_position_m << " m and "
-        << result.options.converged_heading_rad / geometry::kRadiansPerDegree << " deg)\n";
-  }
-  (void)err;
-  return kExitOk;
-}
 
 }  // namespace playerkit::amcl_offline

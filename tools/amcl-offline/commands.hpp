@@ -12,6 +12,5 @@ namespace playerkit::amcl_offline {
 int run_map(const MapOptions& options, std::ostream& err);
 int run_perturb(const PerturbCommand& command, std::ostream& out, std::ostream& err);
 int run_localize(const LocalizeOptions& options, std::ostream& out, std::ostream& err);
-int run_eval(const EvalCommand& command, std::ostream& out, std::ostream& err);
 
 }  // namespace playerkit::amcl_offline

@@ -6,6 +6,7 @@
 
 #include "parse_errors.hpp"
 #include "commands.hpp"
+#include "eval_command.hpp"
 #include "plan_command.hpp"
 #include "stop_signals.hpp"
 
@@ -26,6 +27,7 @@ Examples:
   amcl-offline localize run.log --map cave.pnm --scale 0.03 --negate --global --seed 7
   amcl-offline localize sim.log --map cave.pnm --scale 0.03 --negate --origin 0,0 --init-pose truth
   amcl-offline eval est.csv --truth intel.log.gz
+  amcl-offline eval runs/ --truth intel.log.gz --format markdown    a table: a row per runs/*.csv
 
 localize writes one row per scan: time,x,y,yaw,std_x,std_y,std_yaw,particles
 (metres, radians; --format log: Player log localize:0 lines instead), and a one-line summary on stderr: scans, wall time,
@@ -118,10 +120,13 @@ int main(int argc, char** argv) {
   localize_app->add_option("--plot", localize.plot, "PNG of the map, the paths and the last scan");
 
   offline::EvalCommand eval;
-  auto* eval_app = app.add_subcommand("eval", "trajectory error of an estimate against the truth");
-  eval_app->add_option("ESTIMATE", eval.estimate, "CSV from localize")->required();
-  eval_app->add_option("--truth", eval.truth, "a log with true poses, or a CSV with time,x,y,yaw")->required();
-  eval_app->add_flag("--json", eval.json, "one JSON object");
+  auto* eval_app = app.add_subcommand("eval", "trajectory error of estimates against the truth: one report, or a table of runs");
+  eval_app->add_option("ESTIMATE", eval.estimates, "CSVs from localize, or directories of them")->required();
+  eval_app->add_option("--truth", eval.truths,
+                       "a log with true poses, or a CSV with time,x,y,yaw: once for all estimates, or once each")
+      ->required();
+  eval_app->add_option("--format", eval.format, "text (default), markdown or json");
+  eval_app->add_flag("--json", eval.json, "the same as --format json");
 
   offline::PlanCommand plan;
   auto* plan_app = app.add_subcommand("plan", "a path on a map keeping robot radius + safety from walls and unknown space");
@@ -154,5 +159,5 @@ int main(int argc, char** argv) {
     return guarded([&] { return offline::run_localize(offline::make_localize_options(localize), std::cout, std::cerr); });
   }
   if (plan_app->parsed()) return guarded([&] { return offline::run_plan(offline::make_plan_options(plan), std::cout, std::cerr); });
-  return guarded([&] { return offline::run_eval(eval, std::cout, std::cerr); });
+  return guarded([&] { return offline::run_eval(offline::make_eval_options(eval), std::cout, std::cerr); });
 }
