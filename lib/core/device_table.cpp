@@ -5,6 +5,11 @@
 
 namespace playerkit::core {
 
+DeviceTable::~DeviceTable() {
+  shutdown_all();
+  while (!devices_.empty()) devices_.pop_back();
+}
+
 Device& DeviceTable::add(std::unique_ptr<Device> device) {
   const auto same_key = [&](const std::unique_ptr<Device>& d) { return d->key() == device->key(); };
   if (auto it = std::find_if(devices_.begin(), devices_.end(), same_key); it != devices_.end()) {

@@ -14,6 +14,14 @@ namespace playerkit::core {
 
 class DeviceTable {
  public:
+  DeviceTable() = default;
+  // shutdown_all(), then the devices are destroyed last declared first: a
+  // driver built on other devices (amcl on a laser) lets go of them in its
+  // shutdown and destructor, and they must still be there then.
+  ~DeviceTable();
+  DeviceTable(const DeviceTable&) = delete;
+  DeviceTable& operator=(const DeviceTable&) = delete;
+
   // A device with the same key replaces the old one in its place.
   Device& add(std::unique_ptr<Device> device);
 

@@ -125,5 +125,62 @@ TEST_F(DeviceTableFixture, DriversMaySubscribeToOtherDevices) {
   EXPECT_EQ(counts.shutdown, 2);
 }
 
+// What a table's destruction did, seen by the drivers of a source device and
+// of a device built on it.
+struct Lifetimes {
+  bool source_destroyed = false;
+  bool dependent_shut_down = false;
+  bool source_alive_at_dependent_shutdown = false;
+};
+
+class WatchedSourceDriver : public Driver {
+ public:
+  explicit WatchedSourceDriver(Lifetimes& lifetimes) : lifetimes_(lifetimes) {}
+  ~WatchedSourceDriver() override { lifetimes_.source_destroyed = true; }
+
+ private:
+  Lifetimes& lifetimes_;
+};
+
+class WatchingDependentDriver : public Driver {
+ public:
+  WatchingDependentDriver(Device& source, Lifetimes& lifetimes) : source_(source), lifetimes_(lifetimes) {}
+  void setup() override {
+    if (!source_.subscribe()) throw DriverError("source unavailable");
+  }
+  void shutdown() override {
+    lifetimes_.dependent_shut_down = true;
+    lifetimes_.source_alive_at_dependent_shutdown = !lifetimes_.source_destroyed;
+    // Touching a destroyed source is the bug this watches for; skip it then.
+    if (!lifetimes_.source_destroyed) source_.unsubscribe();
+  }
+
+ private:
+  Device& source_;
+  Lifetimes& lifetimes_;
+};
+
+// A table destroyed without shutdown_all() (a test fixture, an exception
+// unwinding a daemon) shut its devices down in declaration order: the laser
+// was destroyed while amcl still held it, and amcl's shutdown then touched
+// freed memory (AddressSanitizer, drivers_amcl_test).
+TEST_F(DeviceTableFixture, DestructionShutsDownDependentsBeforeTheirSources) {
+  Lifetimes lifetimes;
+  {
+    DeviceTable local;
+    Device& laser = local.add(std::make_unique<Device>(
+        DeviceKey{6665, {protocol::kLaserCode, 0}}, DeviceInfo{"watched", "", Access::kRead, {}, false},
+        std::make_unique<WatchedSourceDriver>(lifetimes), clock, logger));
+    Device& localize = local.add(std::make_unique<Device>(
+        DeviceKey{6665, {protocol::kLocalizeCode, 0}}, DeviceInfo{"dependent", "", Access::kRead, {}, false},
+        std::make_unique<WatchingDependentDriver>(laser, lifetimes), clock, logger));
+    ASSERT_TRUE(localize.subscribe());
+    ASSERT_EQ(laser.subscriptions(), 1);
+  }
+  EXPECT_TRUE(lifetimes.dependent_shut_down);
+  EXPECT_TRUE(lifetimes.source_alive_at_dependent_shutdown);
+  EXPECT_TRUE(lifetimes.source_destroyed);
+}
+
 }  // namespace device_table_test
 }  // namespace playerkit::core
