@@ -14,6 +14,9 @@ setup_file() {
 
 setup() {
   prefix="$BATS_FILE_TMPDIR/prefix"
+  # An instrumented build (scripts/test --sanitize) installs instrumented
+  # static libraries: a client linking them needs the sanitizer runtimes.
+  sanitize_flags="${PLAYERKIT_SANITIZE_FLAGS:-}"
   player_serve="$prefix/bin/player-serve"
   # Three position samples 0.2 s apart; autorewind keeps them coming.
   log="$BATS_TEST_TMPDIR/run.log"
@@ -137,7 +140,8 @@ complete_words() {
 
 @test "find_package(playerkit): a C++ and a C client built against the prefix talk to player-serve" {
   cmake -S "$repo_root/tests/install" -B "$BATS_TEST_TMPDIR/build" \
-    -DCMAKE_PREFIX_PATH="$prefix" > "$BATS_TEST_TMPDIR/configure.log" 2>&1 \
+    -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_CXX_FLAGS="$sanitize_flags" -DCMAKE_C_FLAGS="$sanitize_flags" \
+    > "$BATS_TEST_TMPDIR/configure.log" 2>&1 \
     || { cat "$BATS_TEST_TMPDIR/configure.log"; return 1; }
   cmake --build "$BATS_TEST_TMPDIR/build" -j 2 > "$BATS_TEST_TMPDIR/build.log" 2>&1 \
     || { cat "$BATS_TEST_TMPDIR/build.log"; return 1; }
@@ -150,12 +154,12 @@ complete_words() {
   [ "$(pkg-config --variable=prefix playerkit-client)" = "$prefix" ]
   out="$BATS_TEST_TMPDIR/bin"
   mkdir -p "$out"
-  # shellcheck disable=SC2046 # pkg-config's output is a list of flags
-  "${CXX:-c++}" -std=c++20 -o "$out/devices_cpp" "$repo_root/tests/install/devices.cpp" \
+  # shellcheck disable=SC2046,SC2086 # pkg-config's output and sanitize_flags are lists of flags
+  "${CXX:-c++}" -std=c++20 $sanitize_flags -o "$out/devices_cpp" "$repo_root/tests/install/devices.cpp" \
     $(pkg-config --cflags --libs playerkit-client)
   # 1.5 programs say #include <playercclient.h>; a plain C compiler and linker.
-  # shellcheck disable=SC2046
-  "${CC:-cc}" -o "$out/devices_c" "$repo_root/tests/install/devices.c" \
+  # shellcheck disable=SC2046,SC2086
+  "${CC:-cc}" $sanitize_flags -o "$out/devices_c" "$repo_root/tests/install/devices.c" \
     $(pkg-config --cflags --libs playercclient)
   check_clients "$out"
 }
