@@ -13,7 +13,9 @@ battery_plugin="$build_dir/examples/plugin-driver/libplayerkit_battery_plugin.so
 
 # start_server LOGFILE ARGS...: runs player-serve in the background with its
 # stderr in LOGFILE; sets server_pid, and server_port from the first
-# "listening on port N" line (waits at most 10 s for it).
+# "listening on port N" line (waits at most 30 s for it: a replay indexes its
+# whole log first, 6 s for a Radish log under AddressSanitizer on an idle
+# machine; a server that exits early is noticed at once).
 start_server() {
   local log="$1"
   shift
@@ -33,7 +35,7 @@ start_daemon() {
   "$@" 2>"$log" &
   server_pid=$!
   server_port=""
-  for _ in $(seq 1 100); do
+  for _ in $(seq 1 300); do
     server_port="$(sed -n 's/.*listening on port \([0-9]*\).*/\1/p' "$log" | head -n 1)"
     [ -n "$server_port" ] && return 0
     kill -0 "$server_pid" 2>/dev/null || return 1
