@@ -66,10 +66,21 @@ Message message_from_json(const nlohmann::json& j) {
   } else {
     throw JsonError("message: \"device\" must be an interface name or code, got " + device_it->dump());
   }
-  const std::uint16_t index = j.value("index", std::uint16_t{0});
+  std::uint16_t index = 0;
+  if (const auto index_it = j.find("index"); index_it != j.end()) {
+    // Checked here rather than by the JSON library, which would wrap 70000
+    // or cut 1.5 without a word.
+    if (!index_it->is_number_unsigned() || index_it->get<std::uint64_t>() > 0xFFFF) {
+      throw JsonError("message: \"index\" must be a whole number from 0 to 65535, got " + index_it->dump());
+    }
+    index = index_it->get<std::uint16_t>();
+  }
 
   std::optional<std::uint16_t> subtype;
   if (const auto request = j.find("request"); request != j.end()) {
+    if (!request->is_string()) {
+      throw JsonError("message: \"request\" must be a request's name, got " + request->dump());
+    }
     const auto* messages = find_messages(interface);
     const RequestKind* kind = messages ? messages->find_request(request->get<std::string>()) : nullptr;
     if (!kind) {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "protocol/binary_codec.hpp"
 #include "protocol/errors.hpp"
 #include "protocol/interfaces.hpp"
@@ -59,6 +61,28 @@ TEST(MessageJson, ClearErrors) {
   EXPECT_THROW(message_from_json(json::parse(R"({"type":"data","device":"lazer"})")), JsonError);
   EXPECT_THROW(message_from_json(json::parse(R"({"type":"dta","device":"laser"})")), JsonError);
   EXPECT_THROW(message_from_json(json::parse(R"({"type":"req","device":"laser","request":"fly"})")), JsonError);
+}
+
+TEST(MessageJson, IndexAndRequestOfTheWrongKindAreJsonErrors) {
+  // Hand-written JSON (player-send --stdin): each is named, none wraps or is cut.
+  const auto error_of = [](const char* text) -> std::string {
+    try {
+      (void)message_from_json(json::parse(text));
+    } catch (const JsonError& e) {
+      return e.what();
+    }
+    return "no JsonError";
+  };
+  EXPECT_EQ(error_of(R"({"type":"data","device":"power","index":70000})"),
+            "message: \"index\" must be a whole number from 0 to 65535, got 70000");
+  EXPECT_EQ(error_of(R"({"type":"data","device":"power","index":1.5})"),
+            "message: \"index\" must be a whole number from 0 to 65535, got 1.5");
+  EXPECT_EQ(error_of(R"({"type":"data","device":"power","index":"2"})"),
+            "message: \"index\" must be a whole number from 0 to 65535, got \"2\"");
+  EXPECT_EQ(error_of(R"({"type":"req","device":"laser","request":5})"),
+            "message: \"request\" must be a request's name, got 5");
+  EXPECT_EQ(message_from_json(json::parse(R"({"type":"data","device":"power","index":65535})")).device().index,
+            65535);
 }
 
 TEST(MessageJson, TimesPastTheHeaderFieldsAreRefused) {
