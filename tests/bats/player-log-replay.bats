@@ -68,15 +68,32 @@ laser_lines() {
   "$player_log" record "$target" laser:0 position:0 -o "$BATS_TEST_TMPDIR/second.log" -n 4000 2>/dev/null
   stop_replay
   # Data lines from the device name on: interface, index, data time and every
-  # field (sync lines mark when rounds came, which differs from run to run).
+  # field (sync lines mark when rounds came, which differs from run to run),
+  # each device's in its own order. How two devices' lines interleave is not
+  # data: it follows which device a round took first, and under --burst one
+  # round may carry several queued samples of one device.
   for run in first second; do
     awk '$1 !~ /^#/ && $4 != "sync"' "$BATS_TEST_TMPDIR/$run.log" | cut -d' ' -f4- >"$BATS_TEST_TMPDIR/$run.data"
+    for device in laser position; do
+      grep "^$device " "$BATS_TEST_TMPDIR/$run.data" >"$BATS_TEST_TMPDIR/$run.$device" || true
+    done
   done
   [ "$(wc -l <"$BATS_TEST_TMPDIR/first.data")" -eq 4000 ]
   # 189 scans among the first 4000 messages: the corrected poses Intel stamps 0
   # after each scan are served too, at interpolated times (lib/log/log_clock.hpp).
-  [ "$(grep -c '^laser' "$BATS_TEST_TMPDIR/first.data")" -gt 150 ]
-  diff "$BATS_TEST_TMPDIR/first.data" "$BATS_TEST_TMPDIR/second.data"
+  [ "$(wc -l <"$BATS_TEST_TMPDIR/first.laser")" -gt 150 ]
+  [ "$(( $(wc -l <"$BATS_TEST_TMPDIR/first.laser") + $(wc -l <"$BATS_TEST_TMPDIR/first.position") ))" -eq 4000 ]
+  # Both recordings stop at 4000 messages, so where the interleaving differs
+  # near the end one may hold a few more of a device: the shorter sequence
+  # must be the start of the longer, and nearly all of it.
+  for device in laser position; do
+    first_count=$(wc -l <"$BATS_TEST_TMPDIR/first.$device")
+    second_count=$(wc -l <"$BATS_TEST_TMPDIR/second.$device")
+    common=$(( first_count < second_count ? first_count : second_count ))
+    longer=$(( first_count + second_count - common ))
+    [ "$(( common * 100 ))" -ge "$(( longer * 95 ))" ]
+    diff <(head -n "$common" "$BATS_TEST_TMPDIR/first.$device") <(head -n "$common" "$BATS_TEST_TMPDIR/second.$device")
+  done
 }
 
 @test "--loop --start --duration replays the same window again" {
