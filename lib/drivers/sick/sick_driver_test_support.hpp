@@ -18,6 +18,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 #include "algorithms/geometry/pose2.hpp"
@@ -230,14 +231,21 @@ class LaserRig {
     std::lock_guard lock(log_mutex_);
     return log_;
   }
-  // The first log line containing every fragment, or empty.
-  std::string logged(std::initializer_list<std::string_view> fragments) {
-    for (const std::string& line : log_lines()) {
-      bool all = true;
-      for (std::string_view fragment : fragments) all = all && line.find(fragment) != std::string::npos;
-      if (all) return line;
+  // The first log line containing every fragment, or empty if none comes
+  // within `wait`: a driver changes its state (unavailable, available) and
+  // then logs it, so a test that saw the change may ask a moment early.
+  std::string logged(std::initializer_list<std::string_view> fragments,
+                     std::chrono::milliseconds wait = std::chrono::seconds(5)) {
+    const auto deadline = std::chrono::steady_clock::now() + wait;
+    for (;;) {
+      for (const std::string& line : log_lines()) {
+        bool all = true;
+        for (std::string_view fragment : fragments) all = all && line.find(fragment) != std::string::npos;
+        if (all) return line;
+      }
+      if (std::chrono::steady_clock::now() >= deadline) return {};
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
-    return {};
   }
   std::string all_log() {
     std::string text;
