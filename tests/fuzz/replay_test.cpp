@@ -23,13 +23,21 @@ namespace replay_test {
 namespace fs = std::filesystem;
 using Target = int (*)(const std::uint8_t*, std::size_t);
 
+// Test data a target takes as seeds where it stands, instead of a copy under
+// tests/fuzz/corpus (scripts/fuzz seeds from the same: seed_directories_of).
+std::vector<fs::path> seed_data_of(const std::string& target) {
+  if (target == "config_parser") return {fs::path(PLAYERKIT_TEST_DATA_DIR) / "config"};
+  return {};
+}
+
 std::vector<fs::path> inputs_of(const std::string& target) {
+  std::vector<fs::path> directories = seed_data_of(target);
+  for (const char* kind : {"corpus", "regressions"}) directories.push_back(fs::path(PLAYERKIT_FUZZ_DIR) / kind / target);
   std::vector<fs::path> files;
-  for (const char* kind : {"corpus", "regressions"}) {
-    const fs::path directory = fs::path(PLAYERKIT_FUZZ_DIR) / kind / target;
+  for (const fs::path& directory : directories) {
     if (!fs::is_directory(directory)) continue;
     for (const auto& entry : fs::directory_iterator(directory)) {
-      if (entry.is_regular_file()) files.push_back(entry.path());
+      if (entry.is_regular_file() && entry.path().extension() != ".md") files.push_back(entry.path());
     }
   }
   std::sort(files.begin(), files.end());
