@@ -147,7 +147,7 @@ TEST(DriverListing, EveryBuiltInDriverListsAndHasAnInfo) {
     EXPECT_TRUE(contains(text, "\n" + driver->name + " ")) << driver->name;
     const std::string info = info_text(registry, driver->name);
     EXPECT_TRUE(contains(info, "Config:\n  ")) << info;
-    EXPECT_NO_THROW(nlohmann::json::parse(info_text(registry, driver->name, true))) << driver->name;
+    EXPECT_TRUE(nlohmann::json::parse(info_text(registry, driver->name, true)).is_object()) << driver->name;
   }
   EXPECT_TRUE(contains(info_text(registry, "null"), "  null:0 ( driver \"null\" )\n"));
   // passthrough serves every interface.

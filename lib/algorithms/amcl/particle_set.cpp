@@ -41,7 +41,11 @@ void sample_gaussian(const geometry::Pose2& mean, const Eigen::Matrix3d& covaria
   out.resize(count);
   const double weight = 1.0 / static_cast<double>(count);
   for (Particle& particle : out) {
-    const Eigen::Vector3d z(standard_normal(rng), standard_normal(rng), standard_normal(rng));
+    // One draw per statement: the order of a call's arguments is unspecified
+    // (GCC takes them last first, clang first first), and a seed must give
+    // the same particles whichever compiler built the filter.
+    Eigen::Vector3d z;
+    for (int axis = 0; axis < 3; ++axis) z[axis] = standard_normal(rng);
     const Eigen::Vector3d offset = square_root * z;
     particle.pose = {mean.x + offset.x(), mean.y + offset.y(),
                      geometry::normalize_angle(mean.yaw + offset.z())};

@@ -32,6 +32,27 @@ TEST(ParticleSet, GaussianSamplesHaveTheRequestedMeanAndCovariance) {
       << estimate.covariance;
 }
 
+TEST(ParticleSet, GaussianSamplesDrawXThenYThenYawWhateverTheCompiler) {
+  // With the identity covariance a particle is the mean plus three standard
+  // normal draws, taken in this order; a compiler evaluating arguments last
+  // first (GCC) once drew yaw first, so one seed gave other particles.
+  constexpr std::uint64_t seed = 7;
+  std::mt19937_64 rng(seed);
+  std::vector<Particle> particles;
+  sample_gaussian({1.0, -2.0, 0.0}, Eigen::Matrix3d::Identity(), 2, rng, particles);
+
+  std::mt19937_64 reference(seed);
+  std::normal_distribution<double> standard_normal(0.0, 1.0);
+  for (const Particle& particle : particles) {
+    const double dx = standard_normal(reference);
+    const double dy = standard_normal(reference);
+    const double dyaw = standard_normal(reference);
+    EXPECT_NEAR(particle.pose.x, 1.0 + dx, 1e-12);
+    EXPECT_NEAR(particle.pose.y, -2.0 + dy, 1e-12);
+    EXPECT_NEAR(particle.pose.yaw, geometry::normalize_angle(dyaw), 1e-12);
+  }
+}
+
 TEST(ParticleSet, UniformSamplesLieOnFreeCellsOnly) {
   const auto map = test::make_room();
   const FreeSpaceSampler free_space(*map);
