@@ -76,9 +76,17 @@ check_clients() {
   # Nothing installed points back into the source or build tree.
   run grep -rlIF -e "$repo_root/lib" -e "$build_dir" "$prefix/lib" "$prefix/include"
   [ "$status" -eq 1 ]
-  run "$prefix/bin/player-cat" --version
-  [ "$status" -eq 0 ]
-  [[ "$output" == "player-cat (playerkit) "* ]]
+}
+
+@test "every installed tool answers --version with its name and playerkit's" {
+  local tool
+  for path in "$prefix"/bin/*; do
+    tool=$(basename "$path")
+    run "$path" --version
+    echo "$tool: $output"
+    [ "$status" -eq 0 ]
+    [[ "$output" == "$tool (playerkit) "* ]]
+  done
 }
 
 @test "every installed tool has a man page from its --help, naming its subcommands" {

@@ -19,6 +19,7 @@ int map_image(const std::uint8_t* data, std::size_t size);
 int world_file(const std::uint8_t* data, std::size_t size);
 int p2os_sip(const std::uint8_t* data, std::size_t size);
 int sick_telegram(const std::uint8_t* data, std::size_t size);
+int json_line(const std::uint8_t* data, std::size_t size);
 
 // A broken invariant: says which and aborts (a crash for libFuzzer, a dead
 // test program for ctest, both naming the target).

@@ -159,6 +159,7 @@ int main(int argc, char** argv) {
 
   Arguments arguments;
   app.name("player-send");
+  app.set_version_flag("--version", std::string("player-send (playerkit) ") + PLAYERKIT_VERSION);
   app.add_option("ARGS", arguments.words, "[HOST[:PORT]] DEVICE cmd FIELD=VALUE... | DEVICE req NAME [FIELD=VALUE...]");
   app.add_flag("--stdin", arguments.from_stdin, "send the JSON lines read from stdin (format below)");
   app.add_option("--rate", arguments.rate_hz, "with --stdin: at most HZ messages per second")
