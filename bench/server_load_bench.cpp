@@ -2,6 +2,9 @@
 //
 //   ./build/bench/server_load_bench                      # 100 clients x 4 lasers x 100 Hz, 10 s
 //   ./build/bench/server_load_bench --clients 50 --json
+//   ./build/bench/server_load_bench --clients 1000 --devices 1 --mode push-all    # fan-out
+//   ./build/bench/server_load_bench --clients 1000 --devices 1 --seconds 600 \
+//       --latency-samples 1000 --memory-every 10                                 # a soak
 //
 // The server, its drivers and the clients all run in this one process:
 //
@@ -14,7 +17,7 @@
 //    time, in a thread of its own;
 //  * N clients on one Boost.Asio io_context (--client-threads threads): each
 //    reads the banner, asks DATAFREQ --client-frequency, opens laser:0..M-1 for
-//    'r' and then only reads (PUSH_NEW, the default mode). Connects are spread
+//    'r' and then only reads (--mode: PUSH_NEW, the default mode, or PUSH_ALL). Connects are spread
 //    over one client period (--no-stagger: all at once), since each client's
 //    rounds keep the phase of its connect.
 //
@@ -96,6 +99,11 @@ struct Options {
   unsigned client_threads = 1;
   bool stagger = true;  // spread the connects over one client period
   bool json = false;
+  protocol::DataMode mode = protocol::DataMode::kPushNew;
+  // Latency samples kept per client (0: every one). A long run keeps every
+  // k-th so that its own memory stays flat while the server's is watched.
+  std::size_t latency_samples = 0;
+  double memory_every = 0;  // seconds between samples of the process's RSS (0: none)
 };
 
 // ------------------------------------------------------------------ CPU clocks
@@ -280,9 +288,14 @@ class BenchClient : public std::enable_shared_from_this<BenchClient> {
     const std::size_t expected = static_cast<std::size_t>(
         std::ceil(options.devices * std::max<double>(options.rate, options.client_frequency) *
                   (options.seconds + 1.0) * 1.2));
-    total_latency_.reserve(expected);
-    server_latency_.reserve(expected);
-    wire_latency_.reserve(expected);
+    std::size_t kept = expected;
+    if (options.latency_samples > 0 && options.latency_samples < expected) {
+      latency_stride_ = (expected + options.latency_samples - 1) / options.latency_samples;
+      kept = options.latency_samples;
+    }
+    total_latency_.reserve(kept);
+    server_latency_.reserve(kept);
+    wire_latency_.reserve(kept);
   }
 
   // Connects after `delay` (the phase of this client's data rounds).
@@ -335,11 +348,16 @@ class BenchClient : public std::enable_shared_from_this<BenchClient> {
   }
 
   void send_setup() {
-    // DATAFREQ, then a DEV request per laser; all replies are counted in read order.
+    // DATAFREQ, DATAMODE, then a DEV request per laser; all replies are
+    // counted in read order.
     std::vector<std::uint8_t> freq;
     put_u16(freq, protocol::kPlayerDatafreqReq);
     put_u16(freq, options_.client_frequency);
     append_request(setup_, freq);
+    std::vector<std::uint8_t> mode;
+    put_u16(mode, protocol::kPlayerDatamodeReq);
+    mode.push_back(static_cast<std::uint8_t>(options_.mode));
+    append_request(setup_, mode);
     for (unsigned i = 0; i < options_.devices; ++i) {
       std::vector<std::uint8_t> dev;
       put_u16(dev, protocol::kPlayerDevReq);
@@ -348,7 +366,7 @@ class BenchClient : public std::enable_shared_from_this<BenchClient> {
       dev.push_back(static_cast<std::uint8_t>(protocol::Access::kRead));
       append_request(setup_, dev);
     }
-    replies_pending_ = options_.devices + 1;
+    replies_pending_ = options_.devices + 2;
     asio::async_write(socket_, asio::buffer(setup_),
                       [self = shared_from_this()](const boost::system::error_code& ec, std::size_t) {
                         if (ec) self->fail("sending the requests: " + ec.message());
@@ -435,9 +453,11 @@ class BenchClient : public std::enable_shared_from_this<BenchClient> {
           ++counters_.data;
           const std::int64_t published = microseconds_of(header.timestamp_sec, header.timestamp_usec);
           const std::int64_t sent = microseconds_of(header.time_sec, header.time_usec);
-          total_latency_.push_back(clamp32(received_us - published));
-          server_latency_.push_back(clamp32(sent - published));
-          wire_latency_.push_back(clamp32(received_us - sent));
+          if (counters_.data % latency_stride_ == 0 && total_latency_.size() < total_latency_.capacity()) {
+            total_latency_.push_back(clamp32(received_us - published));
+            server_latency_.push_back(clamp32(sent - published));
+            wire_latency_.push_back(clamp32(received_us - sent));
+          }
         }
         return true;
       }
@@ -468,7 +488,7 @@ class BenchClient : public std::enable_shared_from_this<BenchClient> {
           fail("a setup request was refused (type " + std::to_string(header.type) + ")");
           return false;
         }
-        const bool is_dev_reply = replies_pending_ <= options_.devices;  // the first reply is DATAFREQ's
+        const bool is_dev_reply = replies_pending_ <= options_.devices;  // the first two: DATAFREQ's, DATAMODE's
         if (is_dev_reply && (header.size < 7 || payload[6] != static_cast<std::uint8_t>(protocol::Access::kRead))) {
           fail("a laser was not opened for reading");
           return false;
@@ -511,6 +531,7 @@ class BenchClient : public std::enable_shared_from_this<BenchClient> {
   std::vector<std::int32_t> total_latency_;
   std::vector<std::int32_t> server_latency_;
   std::vector<std::int32_t> wire_latency_;
+  std::uint64_t latency_stride_ = 1;
   std::string error_;
 };
 
@@ -571,6 +592,21 @@ struct Snapshot {
   MachineTicks machine;
   std::uint64_t published = 0;
   std::uint64_t late = 0;
+};
+
+// The process's resident memory in MB (VmRSS of /proc/self/status), 0 if unreadable.
+double resident_megabytes() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmRSS:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+  }
+  return 0.0;
+}
+
+struct MemorySample {
+  double seconds = 0;  // since the measured interval began
+  double rss_mb = 0;
 };
 
 std::string fixed(double value, int decimals) {
@@ -696,7 +732,22 @@ int run(const Options& options) {
   };
   g_phase.store(1);
   const Snapshot before = snapshot();
-  std::this_thread::sleep_for(std::chrono::duration<double>(options.seconds));
+  std::vector<MemorySample> memory;
+  const auto measure_end = before.when + std::chrono::duration_cast<SteadyClock::duration>(
+                                             std::chrono::duration<double>(options.seconds));
+  if (options.memory_every > 0) {
+    // A soak: the RSS at the start and every --memory-every seconds. The
+    // clients keep bounded latency samples (--latency-samples), so growth
+    // is the server's (or a leak).
+    const auto every = std::chrono::duration_cast<SteadyClock::duration>(
+        std::chrono::duration<double>(options.memory_every));
+    for (auto next = before.when;; next += every) {
+      memory.push_back({std::chrono::duration<double>(SteadyClock::now() - before.when).count(), resident_megabytes()});
+      if (next + every >= measure_end) break;
+      std::this_thread::sleep_until(next + every);
+    }
+  }
+  std::this_thread::sleep_until(measure_end);
   g_phase.store(2);
   const Snapshot after = snapshot();
   const std::size_t driver_thread_count = shared.clocks.count();
@@ -797,7 +848,13 @@ int run(const Options& options) {
         {"latency", to_json(latency)},
         {"latency_in_server", to_json(latency_in_server)},
         {"latency_on_wire", to_json(latency_on_wire)},
+        {"mode", std::string(protocol::to_string(options.mode))},
     };
+    if (!memory.empty()) {
+      nlohmann::json series = nlohmann::json::array();
+      for (const MemorySample& m : memory) series.push_back({{"seconds", m.seconds}, {"rss_mb", m.rss_mb}});
+      out["memory"] = series;
+    }
     if (!first_error.empty()) out["first_client_error"] = first_error;
     std::cout << out.dump(2) << "\n";
   } else {
@@ -806,7 +863,7 @@ int run(const Options& options) {
       << fixed(options.rate, 1) << " Hz, client DATAFREQ " << options.client_frequency << " Hz, "
       << options.payload << "-byte payload, " << options.client_threads << " client thread(s), "
       << (options.stagger ? "staggered" : "simultaneous") << " connects, "
-      << fixed(elapsed, 2) << " s measured\n";
+      << protocol::to_string(options.mode) << ", " << fixed(elapsed, 2) << " s measured\n";
     o << "  published by drivers      " << fixed(published / elapsed, 0) << " /s  ("
       << after.late - before.late << " late deadlines)\n";
     o << "  offered (x clients)       " << fixed(offered / elapsed, 0) << " data msgs/s\n";
@@ -839,6 +896,13 @@ int run(const Options& options) {
     line("latency publish->client  ", latency);
     line("  publish->round built   ", latency_in_server);
     line("  round built->client    ", latency_on_wire);
+    if (!memory.empty()) {
+      double peak = 0;
+      for (const MemorySample& m : memory) peak = std::max(peak, m.rss_mb);
+      o << "  process RSS               " << fixed(memory.front().rss_mb, 1) << " MB at the start, "
+        << fixed(memory.back().rss_mb, 1) << " MB after " << fixed(memory.back().seconds, 0) << " s, peak "
+        << fixed(peak, 1) << " MB  (" << memory.size() << " samples; --json has them all)\n";
+    }
     std::cout << o.str();
   }
   return errors > 0 || disconnected > 0 ? 1 : 0;
@@ -872,11 +936,23 @@ int main(int argc, char** argv) {
   app.add_flag("!--no-stagger", options.stagger,
                "connect all clients at once instead of spreading them over one client period");
   app.add_flag("--json", options.json, "print one JSON object instead of a table");
+  std::string mode_name(protocol::to_string(options.mode));
+  app.add_option("--mode", mode_name, "data mode each client asks for: push-new (1.5's default) or push-all")
+      ->capture_default_str()
+      ->check(CLI::IsMember({std::string(protocol::to_string(protocol::DataMode::kPushNew)),
+                             std::string(protocol::to_string(protocol::DataMode::kPushAll))}));
+  app.add_option("--latency-samples", options.latency_samples,
+                 "latency samples kept per client, evenly spread (default: all; a soak keeps its memory flat with "
+                 "e.g. 1000)");
+  app.add_option("--memory-every", options.memory_every,
+                 "sample the process's RSS every this many seconds while measuring (a soak)")
+      ->check(CLI::NonNegativeNumber);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
+  options.mode = *protocol::parse_data_mode(mode_name);
   if (frequency->count() == 0) {
     options.client_frequency = static_cast<unsigned>(std::max(1.0, std::round(options.rate)));
   }
