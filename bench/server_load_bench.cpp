@@ -3,8 +3,8 @@
 //   ./build/bench/server_load_bench                      # 100 clients x 4 lasers x 100 Hz, 10 s
 //   ./build/bench/server_load_bench --clients 50 --json
 //   ./build/bench/server_load_bench --clients 1000 --devices 1 --mode push-all    # fan-out
-//   ./build/bench/server_load_bench --clients 1000 --devices 1 --seconds 600 \
-//       --latency-samples 1000 --memory-every 10                                 # a soak
+//   ./build/bench/server_load_bench --clients 1000 --devices 1 --seconds 600 --latency-samples 1000 --memory-every 10
+//                                                                                 # a soak: RSS every 10 s
 //
 // The server, its drivers and the clients all run in this one process:
 //
@@ -453,7 +453,9 @@ class BenchClient : public std::enable_shared_from_this<BenchClient> {
           ++counters_.data;
           const std::int64_t published = microseconds_of(header.timestamp_sec, header.timestamp_usec);
           const std::int64_t sent = microseconds_of(header.time_sec, header.time_usec);
-          if (counters_.data % latency_stride_ == 0 && total_latency_.size() < total_latency_.capacity()) {
+          const bool keep = counters_.data % latency_stride_ == 0 &&
+                            (options_.latency_samples == 0 || total_latency_.size() < options_.latency_samples);
+          if (keep) {
             total_latency_.push_back(clamp32(received_us - published));
             server_latency_.push_back(clamp32(sent - published));
             wire_latency_.push_back(clamp32(received_us - sent));
