@@ -36,7 +36,7 @@ std::string key_of(std::span<const std::uint8_t> payload) {
 
 ClientSession::ClientSession(Socket socket, core::ClientId id, std::uint16_t port,
                              SessionContext context)
-    : socket_(std::move(socket)), context_(std::move(context)), push_timer_(socket_.get_executor()) {
+    : socket_(std::move(socket)), context_(std::move(context)) {
   state_.id = id;
   state_.port = port;
   state_.auth_pending = context_.options.auth_key.has_value();
@@ -53,7 +53,7 @@ void ClientSession::start() {
   // Clients read the banner with a single recv(): it goes first, in one write.
   const auto banner = protocol::make_banner();
   enqueue({banner.begin(), banner.end()});
-  rearm_push_timer();
+  reschedule_pushes();
   read_more();
 }
 
@@ -127,7 +127,7 @@ void ClientSession::handle_authentication(const protocol::Message& message) {
   }
   state_.auth_pending = false;
   send_reply(MessageType::kAck, message.device(), {});
-  rearm_push_timer();
+  reschedule_pushes();
 }
 
 void ClientSession::handle_request(const protocol::Message& message) {
@@ -137,7 +137,7 @@ void ClientSession::handle_request(const protocol::Message& message) {
   }
   if (const std::optional<PlayerReply> reply = answer_or_set_up_first(message)) {
     send_reply(reply->type, message.device(), reply->payload);
-    if (reply->schedule_changed) rearm_push_timer();
+    if (reply->schedule_changed) reschedule_pushes();
     if (reply->round_requested) request_round();
   }
 }
@@ -292,7 +292,8 @@ void ClientSession::write_more() {
   if (output_.empty() && round_pending_) {
     round_pending_ = false;
     if (state_.push_mode() || std::exchange(state_.data_requested, false)) {
-      DataRound round = build_data_round(state_, context_.devices, context_.clock.now());
+      DataRound round = build_data_round(state_, context_.devices, context_.clock.now(),
+                                         std::move(spare_bytes_));
       ++stats_.rounds_sent;
       output_bytes_ += round.bytes.size();
       output_.push_back(std::move(round.bytes));
@@ -300,15 +301,15 @@ void ClientSession::write_more() {
   }
   if (output_.empty()) return;
 
-  std::vector<asio::const_buffer> buffers;
-  buffers.reserve(std::min<std::size_t>(output_.size(), 64));
+  std::size_t count = 0;
   for (const auto& bytes : output_) {
-    if (buffers.size() == 64) break;
-    const std::size_t skip = buffers.empty() ? front_offset_ : 0;
-    buffers.emplace_back(bytes.data() + skip, bytes.size() - skip);
+    if (count == write_buffers_.size()) break;
+    const std::size_t skip = count == 0 ? front_offset_ : 0;
+    write_buffers_[count++] = asio::const_buffer(bytes.data() + skip, bytes.size() - skip);
   }
   writing_ = true;
   last_write_progress_ = Clock::now();
+  const std::span<const asio::const_buffer> buffers(write_buffers_.data(), count);
   socket_.async_write_some(buffers, [self = shared_from_this()](const boost::system::error_code& ec,
                                                                 std::size_t written) {
     self->writing_ = false;
@@ -326,11 +327,21 @@ void ClientSession::write_more() {
         break;
       }
       written -= left_in_front;
+      self->keep_as_spare(std::move(self->output_.front()));
       self->output_.pop_front();
       self->front_offset_ = 0;
     }
     self->write_more();
   });
+}
+
+void ClientSession::keep_as_spare(std::vector<std::uint8_t> written) {
+  // One vector is enough (a session builds one round at a time); a huge one,
+  // from a burst of replies, is given back rather than held for good.
+  constexpr std::size_t kLargestSpare = 64 * 1024;
+  if (spare_bytes_.capacity() == 0 && written.capacity() <= kLargestSpare) {
+    spare_bytes_ = std::move(written);
+  }
 }
 
 void ClientSession::check_stalled(std::chrono::steady_clock::time_point now) {
@@ -346,35 +357,34 @@ void ClientSession::check_stalled(std::chrono::steady_clock::time_point now) {
 
 // ---------------------------------------------------------------- schedule
 
-void ClientSession::rearm_push_timer() {
+void ClientSession::reschedule_pushes() {
   ++push_generation_;
-  push_timer_.cancel();
   if (closed_ || state_.auth_pending || !state_.push_mode() || state_.frequency == 0) return;
-  const unsigned hz = std::min<unsigned>(state_.frequency, context_.options.max_push_frequency);
-  const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / hz));
   // As in 1.5, a round is due once a period has passed since the last one; a
   // new client has had none, so its first round goes out at once.
-  next_push_ = last_push_ == Clock::time_point{} ? Clock::now() : last_push_ + period;
-  wait_for_push(push_generation_);
+  next_push_ = last_push_ == Clock::time_point{} ? Clock::now() : last_push_ + push_period();
+  context_.push_schedule.add(next_push_, weak_from_this(), push_generation_);
 }
 
-void ClientSession::wait_for_push(std::uint64_t generation) {
-  push_timer_.expires_at(next_push_);
-  push_timer_.async_wait([self = shared_from_this(), generation](const boost::system::error_code& ec) {
-    if (ec || self->closed_ || generation != self->push_generation_) return;
-    const auto now = Clock::now();
-    self->last_push_ = now;
-    self->request_round();
-    const unsigned hz = std::min<unsigned>(self->state_.frequency, self->context_.options.max_push_frequency);
-    const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / hz));
-    // Keep the cadence and its phase: after a hiccup longer than a period,
-    // skip the missed slots rather than restart from now. Restarting would
-    // line up every client delayed by the same hiccup, and their rounds would
-    // go out in bursts from then on.
-    self->next_push_ += period;
-    if (self->next_push_ <= now) self->next_push_ += period * ((now - self->next_push_) / period + 1);
-    self->wait_for_push(generation);
-  });
+void ClientSession::push_due(std::uint64_t generation) {
+  if (closed_ || generation != push_generation_) return;
+  const auto now = Clock::now();
+  last_push_ = now;
+  request_round();
+  if (closed_) return;
+  const auto period = push_period();
+  // Keep the cadence and its phase: after a hiccup longer than a period,
+  // skip the missed slots rather than restart from now. Restarting would
+  // line up every client delayed by the same hiccup, and their rounds would
+  // go out in bursts from then on.
+  next_push_ += period;
+  if (next_push_ <= now) next_push_ += period * ((now - next_push_) / period + 1);
+  context_.push_schedule.add(next_push_, weak_from_this(), generation);
+}
+
+ClientSession::Clock::duration ClientSession::push_period() const {
+  const unsigned hz = std::min<unsigned>(state_.frequency, context_.options.max_push_frequency);
+  return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / hz));
 }
 
 // ---------------------------------------------------------------- ending
@@ -401,7 +411,6 @@ void ClientSession::close(const std::string& reason) {
   if (closed_) return;
   closed_ = true;
   ++push_generation_;
-  push_timer_.cancel();
   boost::system::error_code ignored;
   socket_.shutdown(Socket::shutdown_both, ignored);
   socket_.close(ignored);

@@ -23,18 +23,19 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <vector>
 
 #include <boost/asio/ip/tcp.hpp>
-#include <boost/asio/steady_timer.hpp>
 
 #include "core/clock.hpp"
 #include "core/device_table.hpp"
 #include "core/logger.hpp"
+#include "protocol/frame_reader.hpp"
 #include "server/client_state.hpp"
 #include "server/player_requests.hpp"
-#include "protocol/frame_reader.hpp"
+#include "server/push_schedule.hpp"
 #include "server/server_options.hpp"
 
 namespace playerkit::server {
@@ -45,6 +46,7 @@ struct SessionContext {
   const core::Clock& clock;
   core::Logger& logger;
   const ServerOptions& options;
+  PushSchedule& push_schedule;  // when this client's data rounds fall due
   std::function<void(core::ClientId)> closed;  // called once, when the session ends
   // Subscribes to a device whose setup may block on a thread of its own, then
   // calls `done(subscribed)` on the event loop (BackgroundSetups). Empty:
@@ -57,7 +59,7 @@ struct SessionStats {
   std::uint64_t rounds_dropped = 0;  // fell due while the client was still busy
 };
 
-class ClientSession : public std::enable_shared_from_this<ClientSession> {
+class ClientSession final : public std::enable_shared_from_this<ClientSession>, public PushTarget {
  public:
   using Socket = boost::asio::ip::tcp::socket;
 
@@ -69,6 +71,8 @@ class ClientSession : public std::enable_shared_from_this<ClientSession> {
   void close(const std::string& reason);
   // Closes the session if its socket has taken nothing for the stall timeout.
   void check_stalled(std::chrono::steady_clock::time_point now);
+  // A push-mode round has fallen due (called by the PushSchedule).
+  void push_due(std::uint64_t generation) override;
 
   [[nodiscard]] core::ClientId id() const { return state_.id; }
   [[nodiscard]] const SessionStats& stats() const { return stats_; }
@@ -102,9 +106,12 @@ class ClientSession : public std::enable_shared_from_this<ClientSession> {
   void enqueue(std::vector<std::uint8_t> bytes);
   void request_round();
   void write_more();
+  // Keeps a written-out byte vector to build the next round in.
+  void keep_as_spare(std::vector<std::uint8_t> written);
 
-  void rearm_push_timer();
-  void wait_for_push(std::uint64_t generation);
+  // Starts the push schedule afresh after a change of mode or frequency.
+  void reschedule_pushes();
+  [[nodiscard]] Clock::duration push_period() const;
   void release_devices();
   // Logs a problem once per kind per connection, then only at debug level,
   // so that a misbehaving client cannot flood the log.
@@ -132,12 +139,15 @@ class ClientSession : public std::enable_shared_from_this<ClientSession> {
   std::deque<std::vector<std::uint8_t>> output_;
   std::size_t output_bytes_ = 0;
   std::size_t front_offset_ = 0;  // bytes of output_.front() already written
+  // The write in flight gathers up to this many queued vectors; the array
+  // lives here because the socket reads it until the write completes.
+  std::array<boost::asio::const_buffer, 64> write_buffers_{};
+  std::vector<std::uint8_t> spare_bytes_;
   bool writing_ = false;
   bool round_pending_ = false;
   Clock::time_point last_write_progress_;
 
-  boost::asio::steady_timer push_timer_;
-  std::uint64_t push_generation_ = 0;
+  std::uint64_t push_generation_ = 0;  // entries of older generations are stale
   Clock::time_point last_push_{};
   Clock::time_point next_push_{};
 

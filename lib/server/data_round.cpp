@@ -18,8 +18,10 @@ void append_message(std::vector<std::uint8_t>& out, protocol::MessageHeader head
 }  // namespace
 
 DataRound build_data_round(ClientState& client, const core::DeviceTable& devices,
-                           protocol::Timestamp now) {
+                           protocol::Timestamp now, std::vector<std::uint8_t> storage) {
   DataRound round;
+  round.bytes = std::move(storage);
+  round.bytes.clear();
   for (SubscriptionTable::Entry& entry : client.subscriptions.entries()) {
     if (!SubscriptionTable::can_read(entry.access)) continue;
     core::Device* device = devices.find(client.port, entry.device);

@@ -21,7 +21,10 @@ struct DataRound {
 // in the NEW modes only if its timestamp differs from the last one this client
 // got (which is then remembered). Devices that queue data (comms) send every
 // sample this client has not had yet, oldest first. Header time is `now`.
+// `storage` becomes the round's bytes (its contents dropped, its capacity
+// kept): a session hands back its last round's vector so that a round at
+// 100 Hz costs no allocation.
 DataRound build_data_round(ClientState& client, const core::DeviceTable& devices,
-                           protocol::Timestamp now);
+                           protocol::Timestamp now, std::vector<std::uint8_t> storage = {});
 
 }  // namespace playerkit::server

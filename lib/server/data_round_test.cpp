@@ -78,6 +78,19 @@ TEST_F(DataRoundFixture, SendsReadableDevicesInSubscriptionOrderThenSynch) {
   EXPECT_EQ(messages[2].type(), MessageType::kSynch);
 }
 
+TEST_F(DataRoundFixture, AHandedBackVectorIsReusedWithoutItsOldBytes) {
+  open(*laser, 'r');
+  client.mode = protocol::DataMode::kPushAll;
+  laser->publish(Bytes(1000, 0xab), {10, 0});
+  DataRound first = build_data_round(client, devices, {20, 0});
+  const Bytes first_bytes = first.bytes;
+  const std::uint8_t* storage = first.bytes.data();
+  DataRound second = build_data_round(client, devices, {20, 0}, std::move(first.bytes));
+  EXPECT_EQ(second.bytes.data(), storage);  // same capacity needed: no new allocation
+  EXPECT_EQ(second.bytes, first_bytes);     // and nothing of the old round appended twice
+  EXPECT_EQ(split(second.bytes).size(), 2u);
+}
+
 TEST_F(DataRoundFixture, NewModesSkipDataAlreadySentAllModesResend) {
   open(*laser, 'r');
   open(*sonar, 'w');  // write access: no data

@@ -94,6 +94,7 @@ void Server::close_everything(const std::string& reason) {
   for (auto& [id, session] : sessions) session->close(reason);
   update_timer_.cancel();
   stall_timer_.cancel();
+  push_schedule_.clear();
   if (signals_) signals_->cancel();
   io_.stop();
 }
@@ -109,7 +110,7 @@ void Server::accept_next(Listener& listener) {
       const core::ClientId id = next_client_id_++;
       auto session = std::make_shared<ClientSession>(
           std::move(socket), id, listener.port,
-          SessionContext{devices_, clock_, logger_, options_,
+          SessionContext{devices_, clock_, logger_, options_, push_schedule_,
                          [this](core::ClientId closed) {
                            sessions_.erase(closed);
                            client_count_.store(sessions_.size());

@@ -30,6 +30,7 @@
 #include "core/logger.hpp"
 #include "server/background_setups.hpp"
 #include "server/client_session.hpp"
+#include "server/push_schedule.hpp"
 #include "server/server_options.hpp"
 
 namespace playerkit::server {
@@ -85,6 +86,7 @@ class Server final : private core::DeviceListener {
 
   boost::asio::io_context io_;
   BackgroundSetups setups_{io_};  // before the sessions whose DEV replies wait on them
+  PushSchedule push_schedule_{io_.get_executor()};  // outlives the sessions it calls
   std::vector<std::unique_ptr<Listener>> listeners_;
   std::map<core::ClientId, std::shared_ptr<ClientSession>> sessions_;
   core::ClientId next_client_id_ = 1;
