@@ -1,5 +1,7 @@
 #include "protocol/json_codec.hpp"
 
+#include <cmath>
+
 namespace playerkit::protocol::detail {
 
 std::string latin1_to_utf8(std::string_view bytes) {
@@ -65,9 +67,13 @@ std::int64_t json_integer(const nlohmann::json& j, const std::string& path, std:
   if (j.is_number_float()) {
     // Accept 5.0 (some tools print every number as a double) but not 5.5.
     const double v = j.get<double>();
-    const auto whole = static_cast<double>(static_cast<std::int64_t>(v));
-    if (whole != v) throw JsonError(path + ": expected an integer, got " + j.dump());
-    if (v < static_cast<double>(min) || v > static_cast<double>(max)) throw out_of_range();
+    // The range first: converting a double beyond int64 is undefined (9e102
+    // from a fuzzer). 2^63 itself is already beyond.
+    constexpr double kBeyondInt64 = 9223372036854775808.0;
+    if (!(v >= static_cast<double>(min) && v <= static_cast<double>(max)) || v >= kBeyondInt64) {
+      throw out_of_range();
+    }
+    if (std::trunc(v) != v) throw JsonError(path + ": expected an integer, got " + j.dump());
     return static_cast<std::int64_t>(v);
   }
   if (j.is_boolean()) return j.get<bool>() ? 1 : 0;

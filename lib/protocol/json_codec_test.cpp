@@ -59,6 +59,19 @@ TEST(JsonCodec, OutOfRangeAndWrongTypesNameThePath) {
   EXPECT_EQ(from_json<PositionCommand>(json::parse(R"({"xspeed":2.0})")).xspeed, 2);
 }
 
+TEST(JsonCodec, AHugeDoubleInAnIntegerFieldIsOutOfRangeNotUndefined) {
+  // Found by the json_line fuzzer: 9e102 was cast to int64 before the range check.
+  try {
+    (void)from_json<PositionCommand>(json::parse(R"({"xspeed":9e102})"));
+    FAIL();
+  } catch (const JsonError& e) {
+    EXPECT_NE(std::string(e.what()).find("is out of range"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW((void)from_json<PositionCommand>(json::parse(R"({"xspeed":-1e300})")), JsonError);
+  EXPECT_THROW((void)from_json<LaserData>(json::parse(R"({"ranges":[1e19]})")), JsonError);
+  EXPECT_EQ(from_json<PositionCommand>(json::parse(R"({"xspeed":-3.0})")).xspeed, -3);
+}
+
 TEST(JsonCodec, TooManyElementsIsAnError) {
   json ranges = json::array();
   for (int i = 0; i < 402; ++i) ranges.push_back(i);
