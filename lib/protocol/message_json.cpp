@@ -38,7 +38,13 @@ nlohmann::json message_to_json(const Message& message, std::optional<std::uint16
   const auto type = message.type();
   nlohmann::json j;
   j["type"] = std::string(to_string(type));
-  j["device"] = interface_name(message.header.device);
+  // An interface 1.5 does not define keeps its code, as a number, so that
+  // the line can be sent back (player-send takes codes; "interface 73" no).
+  if (find_interface(message.header.device) != nullptr) {
+    j["device"] = interface_name(message.header.device);
+  } else {
+    j["device"] = message.header.device;
+  }
   j["index"] = message.header.device_index;
   j["time"] = message.time().seconds();
   j["timestamp"] = message.timestamp().seconds();

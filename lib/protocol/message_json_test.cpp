@@ -56,6 +56,18 @@ TEST(MessageJson, RequestsCarryTheirName) {
   EXPECT_EQ(from_name.payload[0], kPositionSetOdomReq);
 }
 
+TEST(MessageJson, AnInterfaceWithoutANameKeepsItsCodeAndComesBack) {
+  // Found by the json_line fuzzer: "interface 73" could not be read back.
+  Message m;
+  m.header = make_header(MessageType::kCommand, {73, 2}, {}, {});
+  m.payload = {0};
+  m.header.size = 1;
+  const json j = message_to_json(m);
+  EXPECT_EQ(j["device"], 73);
+  EXPECT_EQ(j["index"], 2);
+  EXPECT_EQ(message_from_json(json::parse(j.dump())), m);
+}
+
 TEST(MessageJson, ClearErrors) {
   EXPECT_THROW(message_from_json(json::parse(R"({"device":"laser"})")), JsonError);
   EXPECT_THROW(message_from_json(json::parse(R"({"type":"data","device":"lazer"})")), JsonError);
