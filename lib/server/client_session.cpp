@@ -44,6 +44,8 @@ ClientSession::ClientSession(Socket socket, core::ClientId id, std::uint16_t por
   const auto endpoint = socket_.remote_endpoint(ec);
   peer_ = ec ? "unknown peer" : endpoint.address().to_string() + ":" + std::to_string(endpoint.port());
   socket_.set_option(asio::ip::tcp::no_delay(true), ec);
+  // write_more() writes in place and waits only when the socket is full.
+  socket_.non_blocking(true, ec);
 }
 
 std::string ClientSession::label() const { return "client " + std::to_string(state_.id) + " (" + peer_ + ")"; }
@@ -288,51 +290,72 @@ void ClientSession::request_round() {
 }
 
 void ClientSession::write_more() {
-  if (closed_ || writing_) return;
-  if (output_.empty() && round_pending_) {
-    round_pending_ = false;
-    if (state_.push_mode() || std::exchange(state_.data_requested, false)) {
-      DataRound round = build_data_round(state_, context_.devices, context_.clock.now(),
-                                         std::move(spare_bytes_));
-      ++stats_.rounds_sent;
-      output_bytes_ += round.bytes.size();
-      output_.push_back(std::move(round.bytes));
+  if (closed_ || waiting_for_room_) return;
+  // Written in place while the socket takes them (almost always, at once):
+  // an asynchronous write per round would cost a queued operation and a
+  // completion handler each, about a twentieth of the loop at 1000 clients.
+  for (;;) {
+    if (output_.empty() && round_pending_) {
+      round_pending_ = false;
+      if (state_.push_mode() || std::exchange(state_.data_requested, false)) {
+        DataRound round = build_data_round(state_, context_.devices, context_.clock.now(),
+                                           std::move(spare_bytes_));
+        ++stats_.rounds_sent;
+        output_bytes_ += round.bytes.size();
+        output_.push_back(std::move(round.bytes));
+      }
     }
-  }
-  if (output_.empty()) return;
+    if (output_.empty()) return;
 
-  std::size_t count = 0;
-  for (const auto& bytes : output_) {
-    if (count == write_buffers_.size()) break;
-    const std::size_t skip = count == 0 ? front_offset_ : 0;
-    write_buffers_[count++] = asio::const_buffer(bytes.data() + skip, bytes.size() - skip);
+    std::size_t count = 0;
+    for (const auto& bytes : output_) {
+      if (count == write_buffers_.size()) break;
+      const std::size_t skip = count == 0 ? front_offset_ : 0;
+      write_buffers_[count++] = asio::const_buffer(bytes.data() + skip, bytes.size() - skip);
+    }
+    boost::system::error_code ec;
+    const std::size_t written =
+        socket_.write_some(std::span<const asio::const_buffer>(write_buffers_.data(), count), ec);
+    if (ec == asio::error::would_block || ec == asio::error::try_again) {
+      wait_for_room();
+      return;
+    }
+    if (ec) {
+      close("connection lost: " + ec.message());
+      return;
+    }
+    consume_written(written);
   }
-  writing_ = true;
+}
+
+void ClientSession::wait_for_room() {
+  waiting_for_room_ = true;
   last_write_progress_ = Clock::now();
-  const std::span<const asio::const_buffer> buffers(write_buffers_.data(), count);
-  socket_.async_write_some(buffers, [self = shared_from_this()](const boost::system::error_code& ec,
-                                                                std::size_t written) {
-    self->writing_ = false;
+  socket_.async_wait(Socket::wait_write, [self = shared_from_this()](const boost::system::error_code& ec) {
+    self->waiting_for_room_ = false;
     if (self->closed_) return;
     if (ec) {
       self->close("connection lost: " + ec.message());
       return;
     }
     self->last_write_progress_ = Clock::now();
-    self->output_bytes_ -= written;
-    while (written > 0) {
-      const std::size_t left_in_front = self->output_.front().size() - self->front_offset_;
-      if (written < left_in_front) {
-        self->front_offset_ += written;
-        break;
-      }
-      written -= left_in_front;
-      self->keep_as_spare(std::move(self->output_.front()));
-      self->output_.pop_front();
-      self->front_offset_ = 0;
-    }
     self->write_more();
   });
+}
+
+void ClientSession::consume_written(std::size_t written) {
+  output_bytes_ -= written;
+  while (written > 0) {
+    const std::size_t left_in_front = output_.front().size() - front_offset_;
+    if (written < left_in_front) {
+      front_offset_ += written;
+      break;
+    }
+    written -= left_in_front;
+    keep_as_spare(std::move(output_.front()));
+    output_.pop_front();
+    front_offset_ = 0;
+  }
 }
 
 void ClientSession::keep_as_spare(std::vector<std::uint8_t> written) {
@@ -345,7 +368,7 @@ void ClientSession::keep_as_spare(std::vector<std::uint8_t> written) {
 }
 
 void ClientSession::check_stalled(std::chrono::steady_clock::time_point now) {
-  if (closed_ || !writing_) return;
+  if (closed_ || !waiting_for_room_) return;
   if (now - last_write_progress_ > context_.options.stall_timeout) {
     const auto seconds = std::chrono::duration<double>(now - last_write_progress_).count();
     context_.logger.warning(label() + ": has not read anything for " + std::to_string(seconds).substr(0, 4) +

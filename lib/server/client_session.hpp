@@ -106,6 +106,8 @@ class ClientSession final : public std::enable_shared_from_this<ClientSession>, 
   void enqueue(std::vector<std::uint8_t> bytes);
   void request_round();
   void write_more();
+  void wait_for_room();
+  void consume_written(std::size_t written);
   // Keeps a written-out byte vector to build the next round in.
   void keep_as_spare(std::vector<std::uint8_t> written);
 
@@ -139,11 +141,10 @@ class ClientSession final : public std::enable_shared_from_this<ClientSession>, 
   std::deque<std::vector<std::uint8_t>> output_;
   std::size_t output_bytes_ = 0;
   std::size_t front_offset_ = 0;  // bytes of output_.front() already written
-  // The write in flight gathers up to this many queued vectors; the array
-  // lives here because the socket reads it until the write completes.
+  // A write gathers up to this many queued vectors.
   std::array<boost::asio::const_buffer, 64> write_buffers_{};
   std::vector<std::uint8_t> spare_bytes_;
-  bool writing_ = false;
+  bool waiting_for_room_ = false;  // the socket was full; a wait for room is pending
   bool round_pending_ = false;
   Clock::time_point last_write_progress_;
 
