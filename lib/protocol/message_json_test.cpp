@@ -68,6 +68,22 @@ TEST(MessageJson, AnInterfaceWithoutANameKeepsItsCodeAndComesBack) {
   EXPECT_EQ(message_from_json(json::parse(j.dump())), m);
 }
 
+TEST(MessageJson, ARequestCutShortAfterItsSubtypeComesBackAsJustTheSubtype) {
+  // Found by the json_line fuzzer: idarturret's request struct has no
+  // "subtype" field, so {"subtype":0} was refused on the way back.
+  Message m;
+  m.header = make_header(MessageType::kRequest, {kIdarturretCode, 0}, {}, {});
+  m.payload = {0};
+  m.header.size = 1;
+  const json j = message_to_json(m);
+  EXPECT_EQ(j["data"], (json{{"subtype", 0}}));
+  EXPECT_EQ(message_from_json(json::parse(j.dump())), m);
+  // Other fields beside it still go through the request's struct.
+  EXPECT_THROW(message_from_json(json::parse(
+                   R"({"type":"req","device":"idarturret","data":{"subtype":0,"bogus":1}})")),
+               JsonError);
+}
+
 TEST(MessageJson, ClearErrors) {
   EXPECT_THROW(message_from_json(json::parse(R"({"device":"laser"})")), JsonError);
   EXPECT_THROW(message_from_json(json::parse(R"({"type":"data","device":"lazer"})")), JsonError);

@@ -93,10 +93,12 @@ nlohmann::json payload_to_json(std::uint16_t interface, MessageType type,
 std::vector<std::uint8_t> request_payload(const InterfaceMessages& messages, const RequestKind& kind,
                                           const nlohmann::json& fields) {
   if (is_raw_payload_json(fields)) return raw_bytes(fields);
-  if (kind.form == RequestForm::kQuery || !kind.request) {
-    const bool only_subtype =
-        fields.is_null() || (fields.is_object() && (fields.empty() || (fields.size() == 1 && fields.contains("subtype"))));
-    if (!only_subtype) {
+  // {"subtype": n} alone is the subtype and nothing else, whatever the kind:
+  // payload_to_json prints a request cut short after its subtype that way.
+  const bool just_subtype = fields.is_object() && fields.size() == 1 && fields.contains("subtype");
+  if (kind.form == RequestForm::kQuery || !kind.request || just_subtype) {
+    const bool no_fields = fields.is_null() || (fields.is_object() && fields.empty()) || just_subtype;
+    if (!no_fields) {
       throw JsonError(std::string(kind.name) + ": this request takes no fields, got " + fields.dump());
     }
     std::vector<std::uint8_t> payload;
