@@ -20,6 +20,7 @@ int world_file(const std::uint8_t* data, std::size_t size);
 int p2os_sip(const std::uint8_t* data, std::size_t size);
 int sick_telegram(const std::uint8_t* data, std::size_t size);
 int json_line(const std::uint8_t* data, std::size_t size);
+int log_input(const std::uint8_t* data, std::size_t size);
 
 // A broken invariant: says which and aborts (a crash for libFuzzer, a dead
 // test program for ctest, both naming the target).

@@ -73,5 +73,6 @@ TEST(FuzzReplay, WorldFile) { replay("world_file", playerkit::fuzz::world_file);
 TEST(FuzzReplay, P2osSip) { replay("p2os_sip", playerkit::fuzz::p2os_sip); }
 TEST(FuzzReplay, SickTelegram) { replay("sick_telegram", playerkit::fuzz::sick_telegram); }
 TEST(FuzzReplay, JsonLine) { replay("json_line", playerkit::fuzz::json_line); }
+TEST(FuzzReplay, LogInput) { replay("log_input", playerkit::fuzz::log_input); }
 
 }  // namespace replay_test

@@ -149,6 +149,36 @@ TEST(RobustnessTest, FiftyConcurrentClientsAllGetTheirData) {
   EXPECT_EQ(server.device("laser:0").subscriptions(), 0);
 }
 
+TEST(RobustnessTest, AClientThatReadsLateGetsEveryReplyInOrder) {
+  TestServer server("laser:0 ( driver \"echo\" )\n");
+  RawClient client(server.port(), {.receive_buffer_bytes = 4096});
+  client.read_banner();
+  ASSERT_EQ(client.open(kLaser, 'r'), 'r');
+  // 1800 replies of 2 KB (3.6 MB) are more than both sockets' buffers hold: the
+  // server's writes stop taking bytes and it must wait for room, then go on.
+  constexpr int kRequests = 1800;
+  for (int i = 0; i < kRequests; ++i) {
+    Bytes payload(2000, 0x55);
+    payload[0] = 1;  // the echo driver's subtype
+    payload[1] = static_cast<std::uint8_t>(i >> 8);
+    payload[2] = static_cast<std::uint8_t>(i & 0xff);
+    client.send_request(kLaser, payload);
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  int next = 0;
+  while (next < kRequests) {
+    const auto message = client.read_message(std::chrono::seconds(10));
+    ASSERT_TRUE(message) << "reply " << next << " never came";
+    if (message->type() == MessageType::kSynch) continue;
+    ASSERT_EQ(message->type(), MessageType::kAck);
+    ASSERT_EQ(message->payload.size(), 2000u);
+    ASSERT_EQ(message->payload[1] << 8 | message->payload[2], next) << "replies out of order";
+    ++next;
+  }
+  EXPECT_FALSE(server.logged("does not read its replies"));
+  EXPECT_FALSE(server.logged("has not read anything"));
+}
+
 TEST(RobustnessTest, AStalledClientDoesNotDelayOthersAndIsDisconnected) {
   server::ServerOptions options;
   options.stall_timeout = std::chrono::milliseconds(1500);
