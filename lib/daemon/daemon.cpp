@@ -134,8 +134,12 @@ void Daemon::warn_if_nothing_replayed() {
 
 void Daemon::start() {
   try {
-    devices_.prepare_all();
+    // Always-on devices first: a recorder (writelog) is then listening when
+    // prepare() starts a simulated world, and records it from its first step
+    // even at --speedup 0, which otherwise ran to its limit before the
+    // recorder was set up.
     devices_.start_alwayson();
+    devices_.prepare_all();
   } catch (const std::exception& e) {
     logger_.error(e.what());
     devices_.shutdown_all();

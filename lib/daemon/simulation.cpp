@@ -41,6 +41,7 @@ ServedWorld load_served_world(const SimulationOptions& options, std::uint16_t de
       drivers::sim::SimulationSettings{.speedup = options.speedup,
                                        .run_limit = options.sim_time,
                                        .start_paused = options.paused,
+                                       .start_from_prepare_only = true,
                                        .picture = std::move(picture)});
   return served;
 }

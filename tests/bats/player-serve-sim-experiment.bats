@@ -78,24 +78,25 @@ assert result["all"]["heading_rmse_rad"] < 0.035, result'
   [[ "$output" == *"--picture runs a simulation; it needs -s WORLD"* ]]
 }
 
-# record_circling SPEEDUP SEED LOG: 5 simulated seconds of two robots circling
-# under their initial velocity (a noisy laser on one), written by writelog.
+# record_circling SPEEDUP SEED LOG PORT: 5 simulated seconds of two robots
+# circling under their initial velocity (a noisy laser on one), written by
+# writelog. PORT 0 picks a free one (then in server_port); the port is in
+# every log line, so runs compared byte for byte share one.
 record_circling() {
   printf 'null:0 ( driver "writelog" filename "%s" devices ["position:0" "laser:0" "truth:0" "position:1" "sonar:1" "truth:1"] alwayson 1 )\n' \
     "$3" >"$BATS_TEST_TMPDIR/record.cfg"
-  start_server "$BATS_TEST_TMPDIR/serve-$1-$2.log" -s "$BATS_TEST_TMPDIR/circling.world" -p 0 --bind 127.0.0.1 \
+  start_server "$BATS_TEST_TMPDIR/serve-$1-$2.log" -s "$BATS_TEST_TMPDIR/circling.world" -p "$4" --bind 127.0.0.1 \
     --speedup "$1" --seed "$2" --sim-time 5 "$BATS_TEST_TMPDIR/record.cfg"
   for _ in $(seq 1 200); do
     grep -q "the simulation stops at 5" "$BATS_TEST_TMPDIR/serve-$1-$2.log" && break
     sleep 0.05
   done
-  sleep 0.1  # the last step's samples reach the log within a server cycle
   kill -INT "$server_pid"
   wait_for_exit "$server_pid"
   [ "$exit_status" -eq 0 ]
 }
 
-@test "the same seed gives the same samples at two speedups; another seed other laser noise" {
+@test "the same seed records byte-identical logs at 2x, 10x and as fast as possible; another seed other laser noise" {
   # example-4a.world's robots set moving by `velocity`, r0's laser with Stage's noise [c p a].
   cp "$worlds/stage-cave.png" "$BATS_TEST_TMPDIR/"
   sed -e 's/fov 180 samples 180 )/fov 180 samples 180 noise [0.0004 0.01 0.1] )/' \
@@ -103,12 +104,17 @@ record_circling() {
       -e 's/color "blue" )/color "blue" velocity [0.2 0 0 -15] )/' \
       "$worlds/example-4a.world" >"$BATS_TEST_TMPDIR/circling.world"
   grep -q 'velocity \[0.2 0 0 -15\]' "$BATS_TEST_TMPDIR/circling.world"
-  record_circling 2 7 "$BATS_TEST_TMPDIR/slow.log"
-  record_circling 10 7 "$BATS_TEST_TMPDIR/fast.log"
-  record_circling 10 8 "$BATS_TEST_TMPDIR/other-seed.log"
-  # Samples compared by device and data time, from the interface on (the
-  # header's server time and port are the moment and place of writing).
-  python3 - "$BATS_TEST_TMPDIR/slow.log" "$BATS_TEST_TMPDIR/fast.log" "$BATS_TEST_TMPDIR/other-seed.log" <<'PY'
+  record_circling 2 7 "$BATS_TEST_TMPDIR/slow.log" 0
+  local port=$server_port
+  record_circling 10 7 "$BATS_TEST_TMPDIR/fast.log" "$port"
+  record_circling 0 7 "$BATS_TEST_TMPDIR/fastest.log" "$port"
+  record_circling 10 8 "$BATS_TEST_TMPDIR/other-seed.log" "$port"
+  # Every step is in: 2 header lines, then 50 steps of a sync line and six samples.
+  [ "$(wc -l <"$BATS_TEST_TMPDIR/slow.log")" -eq 352 ]
+  cmp "$BATS_TEST_TMPDIR/slow.log" "$BATS_TEST_TMPDIR/fast.log"
+  cmp "$BATS_TEST_TMPDIR/slow.log" "$BATS_TEST_TMPDIR/fastest.log"
+  # The other seed: the same times and positions, other laser noise.
+  python3 - "$BATS_TEST_TMPDIR/slow.log" "$BATS_TEST_TMPDIR/other-seed.log" <<'PY'
 import sys
 def samples(path):
     found = {}
@@ -118,18 +124,11 @@ def samples(path):
             continue
         found[(fields[3], fields[4], fields[5])] = fields[6:]
     return found
-slow, fast, other = (samples(path) for path in sys.argv[1:])
-common = slow.keys() & fast.keys()
-# 5 s: two positions, two truths, a laser and a sonar, each every 0.1 s: 300.
-# How many of them a run keeps depends on the machine's load (the server
-# publishes the newest reading every 10 ms; at 10x a step takes 10 ms, and CI
-# kept 115 of them in common). What must hold is that those kept agree.
-assert len(slow) >= 100, len(slow)
-assert len(common) >= 30, (len(common), len(slow))
-different = [key for key in common if slow[key] != fast[key]]
-assert not different, different[:3]
-lasers = [key for key in slow.keys() & other.keys() if key[0] == "laser"]
+slow, other = (samples(path) for path in sys.argv[1:])
+assert slow.keys() == other.keys(), len(slow.keys() ^ other.keys())
+lasers = [key for key in slow if key[0] == "laser"]
 assert lasers and all(slow[key] != other[key] for key in lasers), len(lasers)
-print("%d samples at 2x, %d at 10x, %d in common, all equal" % (len(slow), len(fast), len(common)), file=sys.stderr)
+positions = [key for key in slow if key[0] == "position"]
+assert positions and all(slow[key] == other[key] for key in positions)
 PY
 }

@@ -106,9 +106,9 @@ void WritelogDriver::open() {
   write_failed_ = false;
   unflushed_ = false;
   write_line(log::log_file_header());
-  last_sync_us_ = core::to_microseconds(device().clock().now());
   {
     std::lock_guard lock(pending_mutex_);
+    last_sync_us_ = core::to_microseconds(device().clock().now());
     pending_.clear();
     last_sequence_.clear();
     // Samples published before set-up are not new: record what comes next.
@@ -134,9 +134,10 @@ void WritelogDriver::close() {
   {
     // A sample whose notification is still on its way is already in its
     // device: take it from there.
+    const protocol::Timestamp now = device().clock().now();
     std::lock_guard lock(pending_mutex_);
     accepting_ = false;
-    for (const core::SourceSubscription& source : sources_) collect_new_samples(*source.device());
+    for (const core::SourceSubscription& source : sources_) collect_new_samples(*source.device(), now);
   }
   write_pending();
   try {
@@ -155,20 +156,29 @@ void WritelogDriver::run(std::stop_token stop) {
       std::unique_lock lock(pending_mutex_);
       pending_ready_.wait_for(lock, stop, kIdleWait, [this] { return !pending_.empty(); });
     }
+    // The clock is read outside pending_mutex_, which publishers take.
+    const protocol::Timestamp now = device().clock().now();
+    {
+      std::lock_guard lock(pending_mutex_);
+      queue_sync_if_due(now);
+    }
     write_pending();
-    write_sync_if_due();
     flush_written(true);
   }
 }
 
 void WritelogDriver::data_published(const core::Device& source) {
+  // On the publisher's thread, at the moment of publishing: a simulation's
+  // clock still reads the step that produced the sample.
+  const protocol::Timestamp now = device().clock().now();
   std::lock_guard lock(pending_mutex_);
   if (!accepting_) return;
-  collect_new_samples(source);
+  collect_new_samples(source, now);
   pending_ready_.notify_one();
 }
 
-void WritelogDriver::collect_new_samples(const core::Device& source) {
+void WritelogDriver::collect_new_samples(const core::Device& source, protocol::Timestamp now) {
+  queue_sync_if_due(now);
   std::uint64_t& last = last_sequence_[&source];
   // A queued device keeps every sample; otherwise the newest is the one just published.
   const auto samples = source.queues_data() ? source.data_since(last)
@@ -176,7 +186,7 @@ void WritelogDriver::collect_new_samples(const core::Device& source) {
   for (const auto& sample : samples) {
     if (sample->sequence <= last) continue;
     last = sample->sequence;
-    pending_.push_back({source.address(), sample});
+    pending_.push_back({now, source.address(), sample});
   }
 }
 
@@ -188,9 +198,13 @@ void WritelogDriver::write_pending() {
   }
   const std::uint16_t port = device().key().port;
   for (const Pending& entry : batch) {
+    if (!entry.sample) {
+      write_line(log::format_sync_line(entry.recorded.seconds(), host_, port));
+      continue;
+    }
     protocol::Message message;
-    message.header = protocol::make_header(protocol::MessageType::kData, entry.address,
-                                           device().clock().now(), entry.sample->timestamp);
+    message.header = protocol::make_header(protocol::MessageType::kData, entry.address, entry.recorded,
+                                           entry.sample->timestamp);
     message.header.size = static_cast<std::uint32_t>(entry.sample->payload.size());
     message.payload = entry.sample->payload;
     try {
@@ -202,12 +216,11 @@ void WritelogDriver::write_pending() {
   }
 }
 
-void WritelogDriver::write_sync_if_due() {
-  const protocol::Timestamp now = device().clock().now();
+void WritelogDriver::queue_sync_if_due(protocol::Timestamp now) {
   const std::uint64_t now_us = core::to_microseconds(now);
   if (now_us < last_sync_us_ + kSyncPeriodMicroseconds) return;
   last_sync_us_ = now_us;
-  write_line(log::format_sync_line(now.seconds(), host_, device().key().port));
+  pending_.push_back({now, {}, nullptr});
 }
 
 void WritelogDriver::write_line(const std::string& line) {

@@ -54,7 +54,11 @@ class WritelogDriver final : public core::ThreadedDriver, private core::DeviceLi
   void run(std::stop_token stop) override;
 
  private:
+  // A line to write: a sample, or a sync line when `sample` is null. Its time
+  // is the clock's when it was queued, not when the thread gets to it, so a
+  // simulation records the same bytes at any speedup.
   struct Pending {
+    protocol::Timestamp recorded;
     protocol::DeviceAddress address;
     std::shared_ptr<const core::DataSample> sample;
   };
@@ -62,10 +66,12 @@ class WritelogDriver final : public core::ThreadedDriver, private core::DeviceLi
   void data_published(const core::Device& device) override;
   void replies_ready(const core::Device&) override {}
 
-  // Queues the samples of `source` not queued yet. Holds pending_mutex_.
-  void collect_new_samples(const core::Device& source);
+  // Queues the samples of `source` not queued yet, recorded at `now`. Holds
+  // pending_mutex_.
+  void collect_new_samples(const core::Device& source, protocol::Timestamp now);
+  // Queues a sync line if one is due at `now`. Holds pending_mutex_.
+  void queue_sync_if_due(protocol::Timestamp now);
   void write_pending();
-  void write_sync_if_due();
   void write_line(const std::string& line);
   // Plain files: after every line. Gzip: at most once a second, from the
   // thread's loop (`periodic`).
@@ -81,7 +87,7 @@ class WritelogDriver final : public core::ThreadedDriver, private core::DeviceLi
   bool write_failed_ = false;
   bool unflushed_ = false;
   std::chrono::steady_clock::time_point last_flush_{};
-  std::uint64_t last_sync_us_ = 0;
+  std::uint64_t last_sync_us_ = 0;  // under pending_mutex_
 
   std::mutex pending_mutex_;
   std::condition_variable_any pending_ready_;

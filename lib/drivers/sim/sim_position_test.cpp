@@ -86,20 +86,28 @@ TEST_F(PositionFixture, APositionGoalIsDrivenTo) {
   EXPECT_NEAR(sim.latest<PositionData>(position()).xpos, 1000, 20);  // its 2 cm tolerance
 }
 
-TEST_F(PositionFixture, PublishesOnlyWhenTheSimulationTimeAdvanced) {
+TEST_F(PositionFixture, PublishesEveryStepAndNothingWhilePaused) {
+  // Every step's reading, as the step happens: a recorder or amcl listening
+  // gets each one, however fast the world runs and however rarely the server
+  // cycles (found: --speedup 0 recorded only the last step).
+  struct Timestamps final : core::DeviceListener {
+    void data_published(const core::Device& device) override { seen.push_back(device.latest_data()->timestamp); }
+    void replies_ready(const core::Device&) override {}
+    std::vector<protocol::Timestamp> seen;
+  } listener;
+  position().add_listener(&listener);
   sim.cycle(position());
   EXPECT_EQ(position().latest_data()->sequence, 0u);  // nothing taken since the subscription
   sim.step();
-  sim.cycle(position());
   EXPECT_EQ(position().latest_data()->sequence, 1u);
   EXPECT_EQ(position().latest_data()->timestamp, (protocol::Timestamp{0, 100000}));
   sim.cycle(position());
   sim.cycle(position());
   EXPECT_EQ(position().latest_data()->sequence, 1u);  // paused: nothing new
   sim.step(3);
-  sim.cycle(position());
-  EXPECT_EQ(position().latest_data()->sequence, 2u);  // the newest reading only
-  EXPECT_EQ(position().latest_data()->timestamp, (protocol::Timestamp{0, 400000}));
+  EXPECT_EQ(position().latest_data()->sequence, 4u);
+  position().remove_listener(&listener);
+  EXPECT_EQ(listener.seen, (std::vector<protocol::Timestamp>{{0, 100000}, {0, 200000}, {0, 300000}, {0, 400000}}));
 }
 
 TEST_F(PositionFixture, GeometryIsTheBodysOffsetAndSize) {

@@ -15,9 +15,11 @@ void SimulatedDevice::setup() {
   use_ = host_->attach();
   // Only readings taken after this moment: the world takes one at the next step.
   published_until_ = activates_ ? host_->activate(model_) : host_->with_world([](World& world) { return world.time(); });
+  host_->observe_steps(this);
 }
 
 void SimulatedDevice::shutdown() {
+  host_->stop_observing_steps(this);
   if (activates_) host_->deactivate(model_);
   unsubscribed();
   use_ = {};
@@ -29,19 +31,20 @@ void SimulatedDevice::skip_readings_until(double time) {
 
 void SimulatedDevice::update() {
   std::optional<core::Command> command = device().take_command();
-  double time = 0.0;
-  std::optional<std::vector<std::uint8_t>> payload;
+  if (!command) return;
   host_->with_world([&](World& world) {
-    if (command) {
-      try {
-        apply_command(world, *command);
-      } catch (const std::exception& e) {
-        device().logger().warning(device().name() + ": command ignored: " + e.what());
-      }
+    try {
+      apply_command(world, *command);
+    } catch (const std::exception& e) {
+      device().logger().warning(device().name() + ": command ignored: " + e.what());
     }
-    time = reading_time(world);
-    if (time > published_until_) payload = encode_reading(world);
   });
+}
+
+void SimulatedDevice::stepped(World& world) {
+  const double time = reading_time(world);
+  if (time <= published_until_) return;
+  std::optional<std::vector<std::uint8_t>> payload = encode_reading(world);
   if (!payload) return;
   published_until_ = time;
   device().publish(std::move(*payload), simulation_timestamp(time));

@@ -3,11 +3,13 @@
 // event-loop driver on one model of a SimulationHost's world. While
 // subscribed its model is active (Stage computes a device's data only while
 // someone reads it, and moves a robot only while its position device is
-// subscribed). Every server cycle it applies the newest command and
-// publishes its model's reading, as the Player 1.5 struct, stamped with the
-// reading's simulation time, when that time has advanced: a paused world
-// publishes nothing new, and a reading taken before the subscription is never
-// sent. Requests are answered with the world locked.
+// subscribed). Every server cycle it applies the newest command. After every
+// step of the world (on the stepping thread) it publishes its model's
+// reading, as the Player 1.5 struct, stamped with the reading's simulation
+// time, when that time has advanced: a recorder or amcl gets every reading
+// at any speedup, a paused world publishes nothing new, and a reading taken
+// before the subscription is never sent. Requests are answered with the
+// world locked.
 
 #include <cstdint>
 #include <memory>
@@ -26,7 +28,7 @@ namespace playerkit::drivers::sim {
 using playerkit::sim::ModelId;
 using playerkit::sim::World;
 
-class SimulatedDevice : public core::Driver {
+class SimulatedDevice : public core::Driver, private StepObserver {
  public:
   // `activates`: whether subscribing makes the model active (a truth device
   // only watches, and must not set its robot moving).
@@ -58,11 +60,14 @@ class SimulatedDevice : public core::Driver {
   void skip_readings_until(double time);
 
  private:
+  void stepped(World& world) final;
+
   std::shared_ptr<SimulationHost> host_;
   const ModelId model_;
   const bool activates_;
   core::SharedConnection::Use use_;
-  double published_until_ = -1.0;  // no reading at or before it is published
+  // No reading at or before it is published. Under the world's lock once set up.
+  double published_until_ = -1.0;
 };
 
 // A payload zero-extended (or cut) to T's size, then decoded: clients send

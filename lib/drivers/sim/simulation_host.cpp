@@ -93,6 +93,16 @@ double SimulationHost::activate(playerkit::sim::ModelId model) {
   return world_.time();
 }
 
+void SimulationHost::observe_steps(StepObserver* observer) {
+  std::lock_guard lock(world_mutex_);
+  step_observers_.push_back(observer);
+}
+
+void SimulationHost::stop_observing_steps(StepObserver* observer) {
+  std::lock_guard lock(world_mutex_);
+  std::erase(step_observers_, observer);
+}
+
 void SimulationHost::deactivate(playerkit::sim::ModelId model) {
   std::lock_guard lock(world_mutex_);
   auto found = active_.find(model);
@@ -149,6 +159,7 @@ bool SimulationHost::step_world() {
   const double now = world_.time();
   time_.store(now);
   clock_->set(simulation_timestamp(now));
+  for (StepObserver* observer : step_observers_) observer->stepped(world_);
   return settings_.run_limit && now + kTimeTolerance >= *settings_.run_limit;
 }
 

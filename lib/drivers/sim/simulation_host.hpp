@@ -28,6 +28,7 @@
 #include <stop_token>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "core/clock.hpp"
 #include "core/logger.hpp"
@@ -41,6 +42,10 @@ struct SimulationSettings {
   double speedup = 1.0;             // × real time; 0: as fast as possible
   std::optional<double> run_limit;  // simulation seconds; stepping stops there
   bool start_paused = false;
+  // The world starts from prepare() only, not from the first device set up.
+  // The daemon sets up its always-on devices before prepare(), so a recorder
+  // among them listens from the first step on.
+  bool start_from_prepare_only = false;
   // A PNG of the world (trails fed every step), written by write_picture()
   // and when the host stops.
   std::optional<PictureSettings> picture{};
@@ -48,6 +53,17 @@ struct SimulationSettings {
 
 // Simulation seconds as a header time (whole microseconds).
 [[nodiscard]] protocol::Timestamp simulation_timestamp(double seconds);
+
+// Told of every step as it happens: on the stepping thread (or step()'s
+// caller), with the world locked and the clock already at the step's time.
+// Must not call back into the host.
+class StepObserver {
+ public:
+  virtual void stepped(playerkit::sim::World& world) = 0;
+
+ protected:
+  ~StepObserver() = default;
+};
 
 class SimulationHost final : public core::SharedConnection {
  public:
@@ -85,6 +101,11 @@ class SimulationHost final : public core::SharedConnection {
   double activate(playerkit::sim::ModelId model);
   void deactivate(playerkit::sim::ModelId model);
 
+  // From the next step on, `observer` hears of every step until it stops
+  // observing (which waits for a step under way).
+  void observe_steps(StepObserver* observer);
+  void stop_observing_steps(StepObserver* observer);
+
   void pause();
   void resume();
   // One step now, then paused (also past the run limit).
@@ -103,8 +124,11 @@ class SimulationHost final : public core::SharedConnection {
 
  protected:
   // The world runs from start() on, subscribed or not: the first device set
-  // up starts it when nobody called start() (tests, tools without prepare).
-  void open() override { start(); }
+  // up starts it when nobody called start() (tests, tools without prepare),
+  // unless the settings leave that to prepare().
+  void open() override {
+    if (!settings_.start_from_prepare_only) start();
+  }
   void close() noexcept override {}
 
  private:
@@ -127,6 +151,7 @@ class SimulationHost final : public core::SharedConnection {
 
   std::mutex world_mutex_;  // the world and active_
   std::map<playerkit::sim::ModelId, int> active_;
+  std::vector<StepObserver*> step_observers_;  // under world_mutex_
 
   mutable std::mutex control_mutex_;  // everything below
   std::condition_variable_any wakeup_;
