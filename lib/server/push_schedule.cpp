@@ -30,10 +30,11 @@ void PushSchedule::wait_until(Clock::time_point when) {
 }
 
 void PushSchedule::hand_out_due() {
-  const Clock::time_point now = Clock::now();
-  // Targets add their next round while we go; it lies after `now`, so this
-  // loop ends even if a target's period is shorter than the time it takes.
-  while (!due_.empty() && due_.top().when <= now) {
+  const Clock::time_point until = Clock::now() + kGatherWithin;
+  // Targets add their next round while we go, a period after the one handed
+  // out, so this loop ends whatever the periods (at most kGatherWithin / period
+  // rounds of one target, which then finds its round still pending).
+  while (!due_.empty() && due_.top().when <= until) {
     Entry entry = due_.top();
     due_.pop();
     if (auto target = entry.target.lock()) target->push_due(entry.generation);

@@ -47,6 +47,21 @@ TEST_F(PushScheduleTest, CallsEveryTargetOnceInDueOrderTiesInTheOrderAdded) {
   EXPECT_EQ(schedule.pending(), 0u);
 }
 
+TEST_F(PushScheduleTest, RoundsDueWithinTheGatheringWindowGoOutOnTheSameWakeUp) {
+  const auto now = Clock::now();
+  auto first = make("first");
+  auto soon = make("soon");
+  auto later = make("later");
+  schedule.add(now, first, 1);
+  schedule.add(now + PushSchedule::kGatherWithin / 2, soon, 2);
+  schedule.add(now + 50 * PushSchedule::kGatherWithin, later, 3);
+  io.run_one();  // one handler: the timer's wake-up
+  EXPECT_EQ(calls, (std::vector<std::string>{"first:1", "soon:2"}));
+  EXPECT_EQ(schedule.pending(), 1u);
+  run();
+  EXPECT_EQ(calls.back(), "later:3");
+}
+
 TEST_F(PushScheduleTest, ATargetGoneByItsTurnIsSkipped) {
   auto kept = make("kept");
   auto gone = make("gone");
