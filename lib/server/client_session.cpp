@@ -307,15 +307,16 @@ void ClientSession::write_more() {
     }
     if (output_.empty()) return;
 
+    // One gathered write of up to 64 queued vectors.
+    std::array<asio::const_buffer, 64> buffers;
     std::size_t count = 0;
     for (const auto& bytes : output_) {
-      if (count == write_buffers_.size()) break;
+      if (count == buffers.size()) break;
       const std::size_t skip = count == 0 ? front_offset_ : 0;
-      write_buffers_[count++] = asio::const_buffer(bytes.data() + skip, bytes.size() - skip);
+      buffers[count++] = asio::const_buffer(bytes.data() + skip, bytes.size() - skip);
     }
     boost::system::error_code ec;
-    const std::size_t written =
-        socket_.write_some(std::span<const asio::const_buffer>(write_buffers_.data(), count), ec);
+    const std::size_t written = socket_.write_some(std::span<const asio::const_buffer>(buffers.data(), count), ec);
     if (ec == asio::error::would_block || ec == asio::error::try_again || (!ec && written == 0)) {
       wait_for_room();
       return;

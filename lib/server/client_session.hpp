@@ -141,8 +141,6 @@ class ClientSession final : public std::enable_shared_from_this<ClientSession>, 
   std::deque<std::vector<std::uint8_t>> output_;
   std::size_t output_bytes_ = 0;
   std::size_t front_offset_ = 0;  // bytes of output_.front() already written
-  // A write gathers up to this many queued vectors.
-  std::array<boost::asio::const_buffer, 64> write_buffers_{};
   std::vector<std::uint8_t> spare_bytes_;
   bool waiting_for_room_ = false;  // the socket was full; a wait for room is pending
   bool round_pending_ = false;
