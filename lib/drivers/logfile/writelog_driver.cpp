@@ -106,9 +106,10 @@ void WritelogDriver::open() {
   write_failed_ = false;
   unflushed_ = false;
   write_line(log::log_file_header());
+  const protocol::Timestamp opened = device().clock().now();  // outside pending_mutex_, as everywhere
   {
     std::lock_guard lock(pending_mutex_);
-    last_sync_us_ = core::to_microseconds(device().clock().now());
+    last_sync_us_ = core::to_microseconds(opened);
     pending_.clear();
     last_sequence_.clear();
     // Samples published before set-up are not new: record what comes next.
