@@ -4,8 +4,9 @@
 // A thousand clients at 100 Hz are 100 000 rounds a second. One timer per
 // client costs a timer-queue insertion, a handler and often a reprogramming of
 // the kernel timer for each of them; here one heap holds every due time and
-// one timer waits for the earliest, and a wake-up hands out every round that
-// has fallen due by then, in due order. Runs on the event-loop thread.
+// one timer waits for the earliest, and a wake-up hands out, in due order,
+// every round due by then or within kGatherWithin after. Runs on the
+// event-loop thread.
 
 #include <chrono>
 #include <cstdint>
