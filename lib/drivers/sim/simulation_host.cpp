@@ -40,6 +40,7 @@ SimulationHost::SimulationHost(playerkit::sim::World world, std::string name, Si
   time_.store(world_.time());
   clock_->set(simulation_timestamp(world_.time()));
   paused_ = settings_.start_paused;
+  held_.store(settings_.start_paused);
   limit_reached_ = settings_.run_limit && world_.time() + kTimeTolerance >= *settings_.run_limit;
   if (settings_.picture) {
     picture_ = std::make_unique<SimulationPicture>(*settings_.picture);
@@ -116,12 +117,14 @@ void SimulationHost::deactivate(playerkit::sim::ModelId model) {
 void SimulationHost::pause() {
   std::lock_guard lock(control_mutex_);
   paused_ = true;
+  held_.store(true);
   wakeup_.notify_all();
 }
 
 void SimulationHost::resume() {
   std::lock_guard lock(control_mutex_);
   paused_ = false;
+  held_.store(false);
   wakeup_.notify_all();
 }
 
@@ -129,10 +132,11 @@ void SimulationHost::step() {
   {
     std::lock_guard lock(control_mutex_);
     paused_ = true;
+    held_.store(true);
     wakeup_.notify_all();
   }
   // The stepping thread may be inside a step: the world lock orders the two.
-  if (step_world()) {
+  if (step_world(true)) {
     std::lock_guard lock(control_mutex_);
     limit_reached_ = true;
   }
@@ -152,8 +156,12 @@ double SimulationHost::time() const { return time_.load(); }
 
 bool SimulationHost::may_run() const { return !paused_ && !limit_reached_; }
 
-bool SimulationHost::step_world() {
+bool SimulationHost::step_world(bool by_hand) {
   std::lock_guard lock(world_mutex_);
+  // The stepping thread saw the world running, then let go of control_mutex_
+  // for the step: a pause() since then holds it here, so that once pause()
+  // has returned and a step under way has ended, the world stands still.
+  if (!by_hand && held_.load()) return false;
   world_.step();
   if (picture_) picture_->record(world_);
   const double now = world_.time();
@@ -197,7 +205,7 @@ void SimulationHost::run(const std::stop_token& stop) {
       }
     }
     lock.unlock();
-    const bool limit = step_world();
+    const bool limit = step_world(false);
     if (settings_.speedup == 0.0) std::this_thread::yield();  // let the event loop at the world
     lock.lock();
     ++done;

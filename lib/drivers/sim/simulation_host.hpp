@@ -135,7 +135,9 @@ class SimulationHost final : public core::SharedConnection {
   void run(const std::stop_token& stop);
   // One world step with the world locked; the clock follows. True when the
   // run limit is reached by it.
-  bool step_world();
+  // One step; from the stepping thread (`by_hand` false) none while held_.
+  // True when the run limit is reached.
+  bool step_world(bool by_hand);
   [[nodiscard]] bool may_run() const;  // control_mutex_ held
 
   playerkit::sim::World world_;
@@ -152,6 +154,10 @@ class SimulationHost final : public core::SharedConnection {
   std::mutex world_mutex_;  // the world and active_
   std::map<playerkit::sim::ModelId, int> active_;
   std::vector<StepObserver*> step_observers_;  // under world_mutex_
+
+  // Paused: the stepping thread takes no further step. Set with paused_,
+  // read in step_world() under world_mutex_.
+  std::atomic<bool> held_{false};
 
   mutable std::mutex control_mutex_;  // everything below
   std::condition_variable_any wakeup_;
