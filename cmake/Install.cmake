@@ -13,7 +13,7 @@
 #   lib/cmake/playerkit/                   find_package(playerkit): playerkit::client,
 #                                          playerkit::playercclient (and playerkit::protocol)
 #   lib/pkgconfig/                         playerkit-client.pc, playercclient.pc
-#   share/man/man1/                        a page per tool, from its --help
+#   share/man/man1/                        a page per tool, from its --help (gzipped)
 #   share/bash-completion/completions/     a script per tool, from its --help
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
@@ -72,6 +72,10 @@ elseif(NOT CMAKE_CROSSCOMPILING AND playerkit_tools)
       COMMAND ${CMAKE_COMMAND} -E make_directory ${playerkit_packaging_out}/man
       COMMAND Python3::Interpreter -B ${playerkit_packaging_dir}/make_man_page.py $<TARGET_FILE:${tool}>
               --version ${PROJECT_VERSION} --see-also ${playerkit_tools_csv} -o ${page}
+      # Installed compressed, as Debian's policy asks (-n: no name or time
+      # inside, so the same page gives the same bytes).
+      COMMAND gzip -9nkf ${page}
+      BYPRODUCTS ${page}.gz
       DEPENDS ${tool} ${playerkit_packaging_dir}/make_man_page.py ${generator_sources}
       COMMENT "Man page ${tool}.1 from ${tool} --help" VERBATIM)
     add_custom_command(OUTPUT ${completion}
@@ -81,7 +85,7 @@ elseif(NOT CMAKE_CROSSCOMPILING AND playerkit_tools)
       DEPENDS ${tool} ${playerkit_packaging_dir}/make_completion.py ${generator_sources}
       COMMENT "Bash completion for ${tool} from ${tool} --help" VERBATIM)
     list(APPEND playerkit_generated_docs ${page} ${completion})
-    install(FILES ${page} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+    install(FILES ${page}.gz DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
     install(FILES ${completion} DESTINATION ${PLAYERKIT_INSTALL_COMPLETIONDIR})
   endforeach()
   add_custom_target(playerkit_tool_docs ALL DEPENDS ${playerkit_generated_docs})

@@ -93,24 +93,24 @@ check_clients() {
   local tool
   for path in "$prefix"/bin/*; do
     tool=$(basename "$path")
-    page="$prefix/share/man/man1/$tool.1"
+    page="$prefix/share/man/man1/$tool.1.gz"
     [ -f "$page" ]
-    grep -qF ".TH $(tr a-z A-Z <<< "$tool" | sed 's/-/\\-/g') 1" "$page"
+    grep -qF ".TH $(tr a-z A-Z <<< "$tool" | sed 's/-/\\-/g') 1" <(zcat "$page")
     # Each long option of the --help is in the page (hyphens escaped for roff).
     for option in $("$path" --help | grep -oE '^  (-[^-, ]+,)?--[a-z][a-z-]*' | sed 's/.*--/--/'); do
-      grep -qF -- "$(sed 's/-/\\-/g' <<< "$option")" "$page" || { echo "$tool.1 lacks $option"; return 1; }
+      zgrep -qF -- "$(sed 's/-/\\-/g' <<< "$option")" "$page" || { echo "$tool.1 lacks $option"; return 1; }
     done
   done
   for sub in info convert cut record replay; do
-    grep -q "^\.SS player\\\\-log $sub$" "$prefix/share/man/man1/player-log.1"
+    zgrep -q "^\.SS player\\\\-log $sub$" "$prefix/share/man/man1/player-log.1.gz"
   done
   for sub in map perturb localize eval; do
-    grep -q "^\.SS amcl\\\\-offline $sub$" "$prefix/share/man/man1/amcl-offline.1"
+    zgrep -q "^\.SS amcl\\\\-offline $sub$" "$prefix/share/man/man1/amcl-offline.1.gz"
   done
-  grep -q 'DEVICE cmd FIELD=VALUE' "$prefix/share/man/man1/player-send.1"
-  grep -q 'DEVICE req NAME' "$prefix/share/man/man1/player-send.1"
+  zgrep -q 'DEVICE cmd FIELD=VALUE' "$prefix/share/man/man1/player-send.1.gz"
+  zgrep -q 'DEVICE req NAME' "$prefix/share/man/man1/player-send.1.gz"
   if command -v man > /dev/null; then
-    run env MANWIDTH=80 man -l "$prefix/share/man/man1/player-serve.1"
+    run env MANWIDTH=80 man -l "$prefix/share/man/man1/player-serve.1.gz"
     [ "$status" -eq 0 ]
     [[ "$output" =~ player-serve\ +-\ +serve\ +the\ +devices ]]
     [[ "$output" == *"-p, --port UINT=6665"* ]]
