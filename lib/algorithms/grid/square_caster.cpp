@@ -132,14 +132,30 @@ SquareCaster::Start SquareCaster::start(Walk& walk, const Ray& ray) const {
   const double exit_x = (border_x - walk.x) * walk.inverse_x;
   const double exit_y = (border_y - walk.y) * walk.inverse_y;
   const int by_x = exit_x <= exit_y;  // x first at a tie, as cast_ray
-  const double leaves = std::min(exit_x, exit_y);
+  double leaves = std::min(exit_x, exit_y);
   // The cell entered: past the border on the axis it leaves by, and where
   // the ray is on the other. Rounding may put that one a cell off where the
   // ray passes within rounding of a cell corner: a tie either cell answers.
   // Chosen by masks rather than a select, which the compiler may turn into
   // a branch that no predictor guesses.
-  const int cell_x = floor_cell(walk.x + leaves * walk.dx);
-  const int cell_y = floor_cell(walk.y + leaves * walk.dy);
+  int cell_x = floor_cell(walk.x + leaves * walk.dx);
+  int cell_y = floor_cell(walk.y + leaves * walk.dy);
+  // Through a cell corner (exactly, or within rounding of one), the floor
+  // can give a cell behind the walk's: going down or left, the crossing's
+  // floor at a corner is the cell beside the corner on the near side. The
+  // ray leaves that cell where it already is, so the step does not move it
+  // on, and the floor of that step sends it back to the cell before: walked
+  // as the rest, it bounces between the two for ever. So a step that does
+  // not move the ray on keeps it from going back on either axis (the cell
+  // ahead of a corner is its diagonal neighbour), and does not move `along`
+  // back. Every walk then ends: `along` takes finitely many values and never
+  // falls, and while it stands still each step moves the cell on by one or
+  // more on one axis and back on neither. Rare enough for a branch.
+  if (!(leaves > along)) [[unlikely]] {
+    cell_x = walk.step_x > 0 ? std::max(cell_x, col) : std::min(cell_x, col);
+    cell_y = walk.step_y > 0 ? std::max(cell_y, row) : std::min(cell_y, row);
+    leaves = along;
+  }
   const int leaves_x_mask = -by_x;  // all ones when the ray leaves by x
   const int next_col = cell_x ^ ((cell_x ^ (col + jump_x)) & leaves_x_mask);
   const int next_row = (row + jump_y) ^ (((row + jump_y) ^ cell_y) & leaves_x_mask);

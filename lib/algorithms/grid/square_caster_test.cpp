@@ -169,6 +169,76 @@ TEST(SquareCaster, DiagonalThroughCornersMeetsTheCellOnIt) {
   EXPECT_NEAR(cast_ray(grid, {0.5, 0.5}, std::numbers::pi / 4, 100.0, RayStop::occupied), expected, 1e-9);
 }
 
+// The same going down and left, next to walls: at each corner the floor of
+// the crossing gives the cell beside the corner, which the ray leaves at
+// once. The walk bounced between the two cells beside a corner for ever
+// before it let crossing times decide (found by a test of rays from cell corners).
+TEST(SquareCaster, DiagonalThroughCornersGoingDownLeftEnds) {
+  OccupancyGrid grid(40, 40, 1.0, {0.0, 0.0}, CellState::free);
+  grid.set(5, 35, CellState::occupied);
+  grid.set(4, 36, CellState::occupied);  // clearance 1 beside the corners passed
+  grid.set(8, 39, CellState::occupied);
+  const double angle = 5 * std::numbers::pi / 4;
+  const Eigen::Vector2d origin(8.0, 38.0);  // a corner, and two more before the wall's
+  const double expected = std::hypot(2.0, 2.0);
+  const SquareCaster caster(grid, RayStop::occupied);
+  EXPECT_NEAR(caster.range(origin, angle, 100.0), expected, 1e-9);
+  const std::vector<SquareCaster::Ray> rays(5, {origin, {std::cos(angle), std::sin(angle)}, 100.0});
+  std::vector<double> ranges(rays.size());
+  caster.ranges(rays, ranges);
+  for (const double range : ranges) EXPECT_NEAR(range, expected, 1e-9);
+  EXPECT_NEAR(cast_ray(grid, origin, angle, 100.0, RayStop::occupied), expected, 1e-9);
+}
+
+// Rays from every third cell corner and centre of a cluttered grid of
+// whole-metre cells, at every multiple of 45 degrees: they run along cell
+// borders and through corners exactly, the cases rounding cannot decide.
+// Every walk ends (the test hanging is its failure), alone as in a batch,
+// at a stopping cell.
+TEST(SquareCaster, RaysAlongBordersAndThroughCornersAllEnd) {
+  const OccupancyGrid cluttered = clutter(21, 40, 40);  // its cells on a grid of whole metres at (0, 0)
+  OccupancyGrid grid(40, 40, 1.0, {0.0, 0.0}, CellState::free);
+  for (int row = 0; row < 40; ++row) {
+    for (int col = 0; col < 40; ++col) grid.set(col, row, cluttered.at(col, row));
+  }
+  std::vector<SquareCaster::Ray> rays;
+  for (int col = 0; col < 40; col += 3) {
+    for (int row = 0; row < 40; row += 3) {
+      for (int eighth = 0; eighth < 8; ++eighth) {
+        const double angle = eighth * std::numbers::pi / 4;
+        const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
+        rays.push_back({{col, row}, direction, 60.0});
+        rays.push_back({{col + 0.5, row + 0.5}, direction, 60.0});
+      }
+    }
+  }
+  for (const RayStop stop : kBothStops) {
+    const SquareCaster caster(grid, stop);
+    std::vector<double> batch(rays.size());
+    caster.ranges(rays, batch);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      const double alone = caster.range(rays[i].origin, rays[i].direction, rays[i].max_range);
+      EXPECT_EQ(alone, batch[i]) << "ray " << i;
+      // Where it stops, a stopping cell touches the ray: at a corner the
+      // walk may pass on the other side of it from cast_ray's, so the cell
+      // may not be cast_ray's.
+      if (alone >= rays[i].max_range) continue;
+      const Eigen::Vector2d stopped = rays[i].origin + alone * rays[i].direction;
+      bool touches = false;
+      for (const double dx : {-1e-9, 1e-9}) {
+        for (const double dy : {-1e-9, 1e-9}) {
+          const Eigen::Vector2i cell = grid.world_to_cell(stopped + Eigen::Vector2d(dx, dy));
+          touches = touches || (grid.contains(cell.x(), cell.y()) &&
+                                (stop == RayStop::occupied ? grid.at(cell.x(), cell.y()) == CellState::occupied
+                                                           : grid.at(cell.x(), cell.y()) != CellState::free));
+        }
+      }
+      EXPECT_TRUE(touches) << "ray " << i << " from (" << rays[i].origin.transpose() << ") along ("
+                           << rays[i].direction.transpose() << ") stopped at (" << stopped.transpose() << ")";
+    }
+  }
+}
+
 TEST(SquareCaster, OriginInsideAStoppingCellGivesZero) {
   OccupancyGrid grid(20, 20, 0.5, {0.0, 0.0}, CellState::free);
   grid.set(4, 4, CellState::occupied);
