@@ -7,7 +7,8 @@
 # then a second one: likelihood-field tracking and global starts over perturb
 # seeds 1-6 (each run with the filter seeded alike), to show how much the
 # figures move with the odometry's luck. Global starts use the defaults
-# (`--global` alone: what the filter needs is derived from the map and log).
+# (`--global` alone: the particle count is derived from the map's free area,
+# and the search ends once one place holds the belief; docs/amcl.md).
 # Örebro has no usable times: its runs are paired with the truth by scan order.
 #
 #   bench/amcl_accuracy.sh [BUILD_DIR]        (default: build)    about 6 minutes

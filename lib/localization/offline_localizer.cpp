@@ -51,6 +51,7 @@ LocalizationSummary localize_log(
   }
 
   LocalizationSummary summary;
+  if (filter.searching()) summary.global_particles = filter.particles().size();
   std::optional<double> first_time;
   bool initialised = options.initial.kind != InitialBelief::Kind::first_truth;
   while (auto logged = reader.next()) {
@@ -73,6 +74,9 @@ LocalizationSummary localize_log(
     result.particles = filter.particles().size();
     if (!first_time) first_time = logged->time;
     summary.log_seconds = logged->time - *first_time;
+    if (summary.global_particles > 0 && !summary.search_ended_at && !filter.searching()) {
+      summary.search_ended_at = summary.log_seconds;
+    }
     ++summary.scans;
     if (result.updated) ++summary.laser_updates;
     on_scan(result, *logged);

@@ -51,6 +51,10 @@ struct LocalizationSummary {
   double log_seconds = 0;                  // last scan time - first scan time
   bool synthetic_times = false;            // the log had no usable times: log_seconds is file order
   double wall_seconds = 0;
+  // A global start: the particles it drew, and when (seconds into the log)
+  // one place had held the belief long enough to end the search.
+  std::size_t global_particles = 0;
+  std::optional<double> search_ended_at;
   [[nodiscard]] double real_time_factor() const { return wall_seconds > 0 ? log_seconds / wall_seconds : 0; }
 };
 

@@ -88,6 +88,19 @@ int run_localize(const LocalizeOptions& options, std::ostream& out, std::ostream
     paths.push_back({estimated_path, {0, 0, 220}, "amcl"});
     map::write_trajectory_plot(*options.plot, *grid, paths, last_scan, last_pose);
   }
+  if (summary.global_particles > 0) {
+    const auto& filter = options.localization.filter;
+    err << std::fixed << std::setprecision(0) << "amcl-offline: global start: " << summary.global_particles
+        << " particles (" << filter.global_particles_per_square_metre << " per m^2 of free space, "
+        << filter.max_particles << " to " << filter.global_particles_most << "); ";
+    if (summary.search_ended_at) {
+      err << std::setprecision(1) << "found after " << *summary.search_ended_at << " s of log (one place held "
+          << std::setprecision(0) << 100 * filter.search_end_weight << " % of the belief for "
+          << filter.search_end_updates << " updates)\n";
+    } else {
+      err << "the search never settled on one place\n";
+    }
+  }
   err << std::fixed << std::setprecision(1) << "amcl-offline: " << summary.scans << " scans ("
       << summary.laser_updates << " updates) in " << std::setprecision(2) << summary.wall_seconds << " s wall";
   if (summary.synthetic_times) {

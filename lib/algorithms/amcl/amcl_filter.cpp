@@ -42,12 +42,51 @@ void AmclFilter::restart() {
 
 void AmclFilter::set_pose(const geometry::Pose2& mean, const Eigen::Matrix3d& covariance) {
   sample_gaussian(mean, covariance, parameters_.max_particles, rng_, particles_);
+  searching_ = false;
+  found_updates_ = 0;
+  apply_recovery_rates();
   restart();
 }
 
 void AmclFilter::set_global() {
-  sample_uniform(free_space_, parameters_.max_particles, rng_, particles_);
+  search_particles_ = global_particles();
+  sample_uniform(free_space_, search_particles_, rng_, particles_);
+  searching_ = true;
+  found_updates_ = 0;
+  apply_recovery_rates();
   restart();
+}
+
+std::size_t AmclFilter::global_particles() const {
+  const double cell_area = map_->resolution() * map_->resolution();
+  const double wanted = parameters_.global_particles_per_square_metre *
+                        static_cast<double>(free_space_.free_cell_count()) * cell_area;
+  const double least = static_cast<double>(parameters_.max_particles);
+  const double most = std::max(least, static_cast<double>(parameters_.global_particles_most));
+  return static_cast<std::size_t>(std::clamp(wanted, least, most));
+}
+
+// The configured rates, or the search's while searching with recovery off.
+void AmclFilter::apply_recovery_rates() {
+  const bool search_rates = searching_ && parameters_.alpha_slow == 0.0 && parameters_.alpha_fast == 0.0;
+  recovery_.set_rates(search_rates ? parameters_.search_alpha_slow : parameters_.alpha_slow,
+                      search_rates ? parameters_.search_alpha_fast : parameters_.alpha_fast);
+}
+
+void AmclFilter::end_search_once_found() {
+  if (!searching_ || clusters_.empty()) return;
+  const Hypothesis& heaviest = clusters_.front();
+  const double spread = std::sqrt(std::max(0.0, heaviest.covariance(0, 0) + heaviest.covariance(1, 1)));
+  if (heaviest.weight < parameters_.search_end_weight || !(spread <= parameters_.search_end_spread)) {
+    found_updates_ = 0;
+    return;
+  }
+  if (++found_updates_ < parameters_.search_end_updates) return;
+  searching_ = false;
+  // The search's averages would read the found belief's likelihood against
+  // the search's; recovery as configured starts afresh.
+  recovery_.reset();
+  apply_recovery_rates();
 }
 
 void AmclFilter::set_parameters(const AmclParameters& parameters) {
@@ -56,7 +95,7 @@ void AmclFilter::set_parameters(const AmclParameters& parameters) {
     likelihood_field_.reset();
   }
   parameters_ = parameters;
-  recovery_.set_rates(parameters_.alpha_slow, parameters_.alpha_fast);
+  apply_recovery_rates();
   refresh_hypotheses();
 }
 
@@ -150,12 +189,13 @@ void AmclFilter::laser_update(const LaserScan& scan) {
           : update_count_ % parameters_.resample_interval == 0;
   if (due) resample();
   refresh_hypotheses();
+  end_search_once_found();
 }
 
 void AmclFilter::resample() {
   ResampleSettings settings;
   settings.min_particles = parameters_.min_particles;
-  settings.max_particles = parameters_.max_particles;
+  settings.max_particles = searching_ ? search_particles_ : parameters_.max_particles;
   settings.kld_error = parameters_.kld_error;
   settings.kld_z = parameters_.kld_z;
   settings.bin_cell_size = parameters_.cluster_cell_size;

@@ -28,16 +28,23 @@ namespace playerkit::amcl {
 
 class AmclFilter {
  public:
-  // Starts with max_particles spread uniformly over the map's free cells
-  // (set_global()). Throws std::invalid_argument for invalid parameters or
-  // a map without free cells.
+  // Starts with a global search (set_global()). Throws
+  // std::invalid_argument for invalid parameters or a map without free
+  // cells.
   AmclFilter(AmclParameters parameters, std::shared_ptr<const grid::OccupancyGrid> map,
              std::uint64_t seed);
 
   // max_particles drawn from N(mean, covariance) over (x, y, yaw).
   void set_pose(const geometry::Pose2& mean, const Eigen::Matrix3d& covariance);
-  // max_particles uniform over free cells with uniform yaw.
+  // max_particles drawn from N(mean, covariance) ends a global search.
+  // A global search: global_particles() uniform over free cells with
+  // uniform yaw, searched as AmclParameters' "global start" says.
   void set_global();
+  // What a global start draws: global_particles_per_square_metre of the
+  // map's free area, clamped to [max_particles, global_particles_most].
+  std::size_t global_particles() const;
+  // True from set_global() until one cluster holds the belief.
+  bool searching() const { return searching_; }
 
   // Feed odometry (robot pose in the odometry frame) and optionally the scan
   // taken at that pose. The first call (and the first after set_pose or
@@ -72,6 +79,8 @@ class AmclFilter {
   void laser_update(const LaserScan& scan);
   void resample();
   void refresh_hypotheses();
+  void end_search_once_found();
+  void apply_recovery_rates();
   LikelihoodFieldModel& likelihood_field();
   BeamModel& beam_model();
   void restart();
@@ -96,6 +105,9 @@ class AmclFilter {
   geometry::Pose2 particle_odometry_;  // odometry the particles were last moved to
   geometry::Pose2 laser_odometry_;     // odometry at the last laser update
   std::size_t update_count_ = 0;
+  bool searching_ = false;
+  std::size_t search_particles_ = 0;  // KLD's ceiling while searching
+  std::size_t found_updates_ = 0;     // laser updates in a row the search's end held
 };
 
 }  // namespace playerkit::amcl

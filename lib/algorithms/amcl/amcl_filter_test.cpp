@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <numbers>
 #include <random>
@@ -129,25 +131,87 @@ TEST(AmclFilter, TracksWithTheBeamModelToo) {
   EXPECT_LT(worst, 0.1);
 }
 
+// The room is nearly symmetric under a half turn: from some starts the
+// search settles on the mirror pose. It must find the robot from most.
 TEST(AmclFilter, GlobalLocalizationConvergesInTheAsymmetricRoom) {
   const auto map = test::make_room();
+  const auto converges = [&](std::uint64_t seed) {
+    SimulatedRobot robot({4.5, 3.5, -0.5}, 13);
+    AmclFilter filter(with_recovery(), map, seed);  // starts global
+    std::size_t updates = 0;
+    std::size_t first_good_update = 0;
+    drive(filter, robot, *map, {{8.5, 1.0}, {8.5, 5.0}, {3.5, 5.0}}, [&] {
+      ++updates;
+      const bool good = distance(filter.best().mean, robot.truth()) < 0.1;
+      if (good && first_good_update == 0) first_good_update = updates;
+      if (!good) first_good_update = 0;
+    });
+    const Hypothesis best = filter.predict(robot.odometry());
+    return first_good_update > 0 && first_good_update < 20 && distance(best.mean, robot.truth()) < 0.1 &&
+           std::abs(geometry::angle_difference(best.mean.yaw, robot.truth().yaw)) < 0.05 && best.weight > 0.9;
+  };
+  int found = 0;
+  for (std::uint64_t seed = 1; seed <= 16; ++seed) found += converges(seed) ? 1 : 0;
+  // 12 measured. Over seeds 1-40: 31 (a 1.5-like start of max_particles
+  // without the search's ceiling: 28).
+  EXPECT_GE(found, 11) << "of 16 starts";
+}
+
+// A global start covers the free space at global_particles_per_square_metre
+// (the room: 55 m^2 free), within [max_particles, global_particles_most].
+TEST(AmclFilter, AGlobalStartDrawsParticlesByTheFreeArea) {
+  const auto map = test::make_room();
+  std::size_t free_cells = 0;
+  for (int row = 0; row < map->height(); ++row) {
+    for (int col = 0; col < map->width(); ++col) free_cells += map->at(col, row) == grid::CellState::free ? 1 : 0;
+  }
+  const double free_area = static_cast<double>(free_cells) * map->resolution() * map->resolution();
+  AmclParameters parameters;
+  AmclFilter filter(parameters, map, 3);
+  EXPECT_TRUE(filter.searching());
+  EXPECT_EQ(filter.particles().size(), static_cast<std::size_t>(100.0 * free_area));
+  EXPECT_EQ(filter.particles().size(), filter.global_particles());
+
+  parameters.global_particles_most = 5100;
+  EXPECT_EQ(AmclFilter(parameters, map, 3).particles().size(), 5100u);
+  parameters.global_particles_per_square_metre = 1.0;  // never fewer than max_particles
+  EXPECT_EQ(AmclFilter(parameters, map, 3).particles().size(), parameters.max_particles);
+  parameters.max_particles = 8000;  // nor when the most is below them
+  EXPECT_EQ(AmclFilter(parameters, map, 3).particles().size(), 8000u);
+
+  filter.set_pose({1.0, 1.0, 0.0}, Eigen::Vector3d(0.01, 0.01, 0.005).asDiagonal());
+  EXPECT_FALSE(filter.searching());
+  EXPECT_EQ(filter.particles().size(), AmclParameters{}.max_particles);
+}
+
+// The search ends once one place has held the belief for
+// search_end_updates updates; then max_particles caps KLD again and
+// recovery is as configured (off by default).
+TEST(AmclFilter, TheSearchEndsWhenOnePlaceHoldsTheBelief) {
+  const auto map = test::make_room();
   SimulatedRobot robot({4.5, 3.5, -0.5}, 13);
-  AmclFilter filter(with_recovery(), map, 44);  // starts global
-  EXPECT_EQ(filter.particles().size(), 5000u);
+  AmclParameters parameters;
+  parameters.search_end_updates = 5;
+  AmclFilter filter(parameters, map, 2);
   std::size_t updates = 0;
-  std::size_t first_good_update = 0;
+  std::size_t ended_at = 0;
+  std::size_t most_after_the_end = 0;
+  double injection_after_the_end = 0.0;
+  double weight_at_the_end = 0.0;
   drive(filter, robot, *map, {{8.5, 1.0}, {8.5, 5.0}, {3.5, 5.0}}, [&] {
     ++updates;
-    const bool good = distance(filter.best().mean, robot.truth()) < 0.1;
-    if (good && first_good_update == 0) first_good_update = updates;
-    if (!good) first_good_update = 0;
+    if (filter.searching()) return;
+    if (ended_at == 0) {
+      ended_at = updates;
+      weight_at_the_end = filter.hypotheses().front().weight;
+    }
+    most_after_the_end = std::max(most_after_the_end, filter.particles().size());
+    injection_after_the_end = std::max(injection_after_the_end, filter.injection_probability());
   });
-  EXPECT_GT(first_good_update, 0u);
-  EXPECT_LT(first_good_update, 20u);
-  const Hypothesis best = filter.predict(robot.odometry());
-  EXPECT_LT(distance(best.mean, robot.truth()), 0.1);
-  EXPECT_LT(std::abs(geometry::angle_difference(best.mean.yaw, robot.truth().yaw)), 0.05);
-  EXPECT_GT(best.weight, 0.9);
+  ASSERT_GT(ended_at, 5u);  // five updates in a row at the least
+  EXPECT_GE(weight_at_the_end, parameters.search_end_weight);
+  EXPECT_LE(most_after_the_end, parameters.max_particles);
+  EXPECT_EQ(injection_after_the_end, 0.0);
 }
 
 TEST(AmclFilter, KldAdaptsTheParticleCount) {
@@ -159,7 +223,7 @@ TEST(AmclFilter, KldAdaptsTheParticleCount) {
   for (double& range : blind.ranges) range = blind.max_range;
   ASSERT_TRUE(filter.update({0, 0, 0}, &blind));
   ASSERT_TRUE(filter.update({0.3, 0, 0}, &blind));  // second update resamples
-  EXPECT_EQ(filter.particles().size(), 5000u);
+  EXPECT_EQ(filter.particles().size(), filter.global_particles());
 
   // Tracking a known pose, it keeps a small fraction of that.
   SimulatedRobot robot({1.0, 1.0, 0.0}, 16);
@@ -321,6 +385,7 @@ TEST(AmclFilter, LiveParameterChangesApply) {
   AmclFilter filter(AmclParameters{}, map, 6);
   AmclParameters changed = filter.parameters();
   changed.max_particles = 500;
+  changed.global_particles_per_square_metre = 0.0;  // a global start of max_particles, as 1.5
   changed.likelihood_max_distance = 1.0;
   filter.set_parameters(changed);
   EXPECT_EQ(filter.parameters().max_particles, 500u);

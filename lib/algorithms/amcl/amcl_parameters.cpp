@@ -25,6 +25,15 @@ void validate(const AmclParameters& p) {
   require(is_probability(p.alpha_slow) && is_probability(p.alpha_fast),
           "alpha_slow and alpha_fast must lie in [0, 1]");
   require(p.alpha_slow <= p.alpha_fast, "alpha_slow must not exceed alpha_fast");
+  require(is_non_negative(p.global_particles_per_square_metre),
+          "global_particles_per_square_metre must be non-negative");
+  require(is_probability(p.search_alpha_slow) && is_probability(p.search_alpha_fast),
+          "search_alpha_slow and search_alpha_fast must lie in [0, 1]");
+  require(p.search_alpha_slow <= p.search_alpha_fast, "search_alpha_slow must not exceed search_alpha_fast");
+  require(is_probability(p.search_end_weight) && p.search_end_weight > 0.0,
+          "search_end_weight must lie in (0, 1]");
+  require(is_positive(p.search_end_spread), "search_end_spread must be positive");
+  require(p.search_end_updates >= 1, "search_end_updates must be at least 1");
   require(is_non_negative(p.rotation_noise_from_rotation) &&
               is_non_negative(p.rotation_noise_from_translation) &&
               is_non_negative(p.translation_noise_from_translation) &&
