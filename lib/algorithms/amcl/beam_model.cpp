@@ -17,7 +17,7 @@ const grid::OccupancyGrid& require_map_for_beams(const std::shared_ptr<const gri
 }  // namespace
 
 BeamModel::BeamModel(std::shared_ptr<const grid::OccupancyGrid> map)
-    : caster_(require_map_for_beams(map), grid::RayStop::occupied_or_unknown) {}
+    : caster_(require_map_for_beams(map), grid::RayStop::occupied) {}
 
 double BeamModel::log_beam_likelihood(double range, bool no_return, double expected,
                                       double max_range, const LaserModelSettings& settings) {

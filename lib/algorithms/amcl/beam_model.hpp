@@ -39,7 +39,11 @@ class BeamModel {
                                     double max_range, const LaserModelSettings& settings);
 
  private:
-  grid::RangeCaster caster_;  // stops where Player 1.5's map_calc_range does: at anything not free
+  // Stops at occupied cells only. Player 1.5's map_calc_range stopped at
+  // anything not free, which a map made from a log (free only where beams
+  // went, unknown between them far from the path) turns into expected
+  // ranges cut short: Radish Edmonton was lost from the true start.
+  grid::RangeCaster caster_;
 };
 
 }  // namespace playerkit::amcl
