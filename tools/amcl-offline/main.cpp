@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
   localize_app->add_option("--init-pose", localize.init_pose, "X,Y,YAW_DEG, or 'truth' (the log's first true pose)");
   localize_app->add_option("--init-var", localize.init_var, "standard deviations SX,SY,SYAW_DEG (default 0.1,0.1,3)");
   localize_app->add_flag("--global", localize.global,
-                         "start anywhere in the free space: a search with 100 particles per m^2 of it");
+                         "start anywhere in the free space: a search with 200 particles per m^2 of it");
   localize_app->add_option("--particles", localize.particles, "MIN,MAX particles (default 100,5000)");
   localize_app->add_option("--model", localize.model, "laser model: likelihood or beam")->capture_default_str();
   localize_app->add_option("--laser-beams", localize.laser_beams, "beams used per scan (default 30)");

@@ -169,7 +169,8 @@ TEST(AmclFilter, AGlobalStartDrawsParticlesByTheFreeArea) {
   AmclParameters parameters;
   AmclFilter filter(parameters, map, 3);
   EXPECT_TRUE(filter.searching());
-  EXPECT_EQ(filter.particles().size(), static_cast<std::size_t>(100.0 * free_area));
+  EXPECT_EQ(filter.particles().size(),
+            static_cast<std::size_t>(parameters.global_particles_per_square_metre * free_area));
   EXPECT_EQ(filter.particles().size(), filter.global_particles());
 
   parameters.global_particles_most = 5100;

@@ -1,15 +1,21 @@
 #include "algorithms/amcl/motion_model.hpp"
 
+#include "algorithms/amcl/standard_normal.hpp"
+
 #include <cmath>
 #include <numbers>
 
 namespace playerkit::amcl {
 namespace {
 
-double sample_with_variance(double variance, std::normal_distribution<double>& standard_normal,
-                            std::mt19937_64& rng) {
-  if (!(variance > 0.0)) return 0.0;
-  return std::sqrt(variance) * standard_normal(rng);
+// The standard deviation of a variance, 0 for none (or a negative one).
+double deviation_of(double variance) { return variance > 0.0 ? std::sqrt(variance) : 0.0; }
+
+// A draw with that deviation; none drawn for 0, so that noise-free motion
+// leaves the random numbers alone.
+double sample_with_deviation(double deviation, const StandardNormal& standard_normal, std::mt19937_64& rng) {
+  if (!(deviation > 0.0)) return 0.0;
+  return deviation * standard_normal(rng);
 }
 
 }  // namespace
@@ -56,12 +62,15 @@ void apply_differential_motion(std::span<Particle> particles, const geometry::Po
   const double rot2_variance =
       noise.rotation_from_rotation * rot2 * rot2 + noise.rotation_from_translation * trans2;
 
-  std::normal_distribution<double> standard_normal(0.0, 1.0);
+  const double rot1_deviation = deviation_of(rot1_variance);
+  const double trans_deviation = deviation_of(trans_variance);
+  const double rot2_deviation = deviation_of(rot2_variance);
+  const StandardNormal standard_normal;
   for (Particle& particle : particles) {
-    const double noisy_rot1 = motion.rotation1 + sample_with_variance(rot1_variance, standard_normal, rng);
+    const double noisy_rot1 = motion.rotation1 + sample_with_deviation(rot1_deviation, standard_normal, rng);
     const double noisy_trans =
-        motion.translation + sample_with_variance(trans_variance, standard_normal, rng);
-    const double noisy_rot2 = motion.rotation2 + sample_with_variance(rot2_variance, standard_normal, rng);
+        motion.translation + sample_with_deviation(trans_deviation, standard_normal, rng);
+    const double noisy_rot2 = motion.rotation2 + sample_with_deviation(rot2_deviation, standard_normal, rng);
     geometry::Pose2& pose = particle.pose;
     const double heading = pose.yaw + noisy_rot1;
     pose.x += noisy_trans * std::cos(heading);
@@ -88,7 +97,7 @@ void apply_omni_motion(std::span<Particle> particles, const geometry::Pose2& odo
   const double rot_sd = std::sqrt(noise.rotation_from_rotation * rot * rot +
                                   noise.rotation_from_translation * trans * trans);
 
-  std::normal_distribution<double> standard_normal(0.0, 1.0);
+  const StandardNormal standard_normal;
   for (Particle& particle : particles) {
     const double along_error = along_sd > 0.0 ? along_sd * standard_normal(rng) : 0.0;
     const double across_error = across_sd > 0.0 ? across_sd * standard_normal(rng) : 0.0;

@@ -14,6 +14,9 @@ inline constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
 
 // Wraps an angle into (-pi, pi].
 inline double normalize_angle(double angle) {
+  // Most angles are in range already (a yaw plus a small turn): std::remainder
+  // would give them back unchanged, at the cost of a library call.
+  if (angle > -std::numbers::pi && angle <= std::numbers::pi) return angle;
   angle = std::remainder(angle, 2.0 * std::numbers::pi);
   if (angle <= -std::numbers::pi) angle += 2.0 * std::numbers::pi;
   return angle;
