@@ -209,7 +209,7 @@ TEST(AmclFilter, TheSearchEndsWhenOnePlaceHoldsTheBelief) {
     most_after_the_end = std::max(most_after_the_end, filter.particles().size());
     injection_after_the_end = std::max(injection_after_the_end, filter.injection_probability());
   });
-  ASSERT_GT(ended_at, 5u);  // five updates in a row at the least
+  ASSERT_GE(ended_at, 5u);  // five updates in a row at the least
   EXPECT_GE(weight_at_the_end, parameters.search_end_weight);
   EXPECT_LE(most_after_the_end, parameters.max_particles);
   EXPECT_EQ(injection_after_the_end, 0.0);
@@ -238,27 +238,35 @@ TEST(AmclFilter, KldAdaptsTheParticleCount) {
   EXPECT_LT(most, 1500u);
 }
 
+// Kidnapped in the nearly symmetric room, the filter must find the robot
+// again from most random streams (one seed proved nothing either way).
 TEST(AmclFilter, AugmentedMclRecoversFromAKidnap) {
   const auto map = test::make_room();
-  SimulatedRobot robot({1.0, 1.0, 0.0}, 14);
-  AmclFilter filter(with_recovery(), map, 45);
-  filter.set_pose({1.0, 1.0, 0.0}, Eigen::Vector3d(0.01, 0.01, 0.005).asDiagonal());
-  drive(filter, robot, *map, {{8.5, 1.0}, {8.5, 3.5}}, [] {});
-  ASSERT_LT(distance(filter.predict(robot.odometry()).mean, robot.truth()), 0.1);
+  const auto recovers = [&](std::uint64_t seed) {
+    SimulatedRobot robot({1.0, 1.0, 0.0}, 14);
+    AmclFilter filter(with_recovery(), map, seed);
+    filter.set_pose({1.0, 1.0, 0.0}, Eigen::Vector3d(0.01, 0.01, 0.005).asDiagonal());
+    drive(filter, robot, *map, {{8.5, 1.0}, {8.5, 3.5}}, [] {});
+    if (distance(filter.predict(robot.odometry()).mean, robot.truth()) >= 0.1) return false;
 
-  // Picked up and put down elsewhere; odometry knows nothing of it.
-  robot.teleport({4.0, 4.0, pi});
-  std::size_t updates_until_recovered = 0;
-  std::size_t updates = 0;
-  const std::vector<Eigen::Vector2d> route{{1.0, 3.0}, {1.0, 1.0}, {8.5, 1.0}, {8.5, 5.0}};
-  drive(filter, robot, *map, route, [&] {
-    ++updates;
-    const bool on_truth = distance(filter.best().mean, robot.truth()) < 0.2;
-    if (on_truth && updates_until_recovered == 0) updates_until_recovered = updates;
-    if (!on_truth) updates_until_recovered = 0;  // must stay recovered
-  });
-  EXPECT_GT(updates_until_recovered, 0u) << "never recovered";
-  EXPECT_LE(updates_until_recovered, 60u);
+    // Picked up and put down elsewhere; odometry knows nothing of it.
+    robot.teleport({4.0, 4.0, pi});
+    std::size_t updates_until_recovered = 0;
+    std::size_t updates = 0;
+    const std::vector<Eigen::Vector2d> route{{1.0, 3.0}, {1.0, 1.0}, {8.5, 1.0}, {8.5, 5.0}};
+    drive(filter, robot, *map, route, [&] {
+      ++updates;
+      const bool on_truth = distance(filter.best().mean, robot.truth()) < 0.2;
+      if (on_truth && updates_until_recovered == 0) updates_until_recovered = updates;
+      if (!on_truth) updates_until_recovered = 0;  // must stay recovered
+    });
+    return updates_until_recovered > 0 && updates_until_recovered <= 60;
+  };
+  int recovered = 0;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) recovered += recovers(seed) ? 1 : 0;
+  // 9 measured; 24 of seeds 1-30, with the ziggurat's deviates as with
+  // std::normal_distribution's.
+  EXPECT_GE(recovered, 8) << "of 12 kidnaps";
 }
 
 TEST(AmclFilter, WithoutRecoveryAKidnapIsNotNoticed) {
