@@ -51,7 +51,9 @@ LocalizationSummary localize_log(
   }
 
   LocalizationSummary summary;
-  if (filter.searching()) summary.global_particles = filter.particles().size();
+  // Only a global start is a search: the filter also starts as one before
+  // a first_truth run sets its pose at the first scan.
+  if (options.initial.kind == InitialBelief::Kind::global) summary.global_particles = filter.particles().size();
   std::optional<double> first_time;
   bool initialised = options.initial.kind != InitialBelief::Kind::first_truth;
   while (auto logged = reader.next()) {

@@ -63,6 +63,8 @@ TEST_F(IntelFixture, TracksTheRobotFromItsTrueStartThroughDegradedOdometry) {
   EXPECT_EQ(rows.size(), 910u);
   EXPECT_GT(summary.laser_updates, 700u);
   EXPECT_NEAR(summary.log_seconds, 2650.86, 0.01);
+  EXPECT_EQ(summary.global_particles, 0u);  // not a search, though the filter begins as one
+  EXPECT_FALSE(summary.search_ended_at);
 
   const auto truth = truth_from_log(testing::radish("intel-corrected.log.gz"));
   const auto tracked = evaluate_trajectory(as_trajectory(rows), truth);

@@ -61,6 +61,25 @@ assert math.degrees(d["heading_rmse_rad"]) < 3.0, d'
   [[ "${lines[4]}" == "| all 2 runs |  |  | "*" | 2/2 converged | "* ]]
 }
 
+@test "--global alone: a search over the free space, said on stderr, that finds the robot" {
+  "$amcl_offline" map "$intel" -o intel.pgm --resolution 0.05 2>/dev/null
+  "$amcl_offline" perturb "$intel" -o odom.log --seed 1 2>/dev/null
+  run --separate-stderr "$amcl_offline" localize odom.log --map intel.yaml --global --seed 1 -o estimate.csv
+  [ "$status" -eq 0 ]
+  echo "$stderr"
+  # 200 particles per m^2 of the map's free space (486 m^2), within 5000 to 100000.
+  [[ "$stderr" =~ global\ start:\ ([0-9]+)\ particles\ \(200\ per\ m\^2 ]]
+  [ "${BASH_REMATCH[1]}" -gt 50000 ] && [ "${BASH_REMATCH[1]}" -le 100000 ]
+  [[ "$stderr" =~ found\ after\ ([0-9.]+)\ s\ of\ log ]]
+  found_at=${BASH_REMATCH[1]}
+  run --separate-stderr "$amcl_offline" eval estimate.csv --truth "$intel" --json
+  [ "$status" -eq 0 ]
+  # The evaluation agrees that it converged, and stayed within 0.15 m after.
+  [ "$(json_number convergence_time_s <<<"$output" | cut -d. -f1)" -le "${found_at%.*}" ]
+  python3 -c 'import sys; assert float(sys.argv[1]) < 0.15' \
+    "$(json_number after_convergence.position_rmse_m <<<"$output")"
+}
+
 @test "dead reckoning alone is far off: the perturbation is real" {
   "$amcl_offline" perturb "$intel" -o odom.log --seed 1 2>/dev/null
   # The odometry of each scan as an 'estimate'.
