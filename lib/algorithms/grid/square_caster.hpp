@@ -17,8 +17,9 @@
 //
 // Every crossing is computed from the ray's origin, never accumulated, so a
 // ray's answer depends on the ray alone; it is cast_ray's up to rounding
-// (about 1e-12 m), except that where a ray passes within rounding of a cell
-// corner the two may take different neighbours.
+// (about 1e-12 m), except that where a ray passes through a cell corner, or
+// within rounding of one, the two may take different cells beside it (and
+// from there meet different walls).
 //
 // Compared with RangeCaster (a Euclidean distance map; for a particle
 // cloud's rays, which start near one another): the same byte a cell, a
