@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 namespace playerkit::amcl {
@@ -60,15 +61,13 @@ double StandardNormal::operator()(std::mt19937_64& rng) const {
     const std::uint64_t bits = rng();
     // The top 53 bits give u in [-1, 1), the lowest 7 the layer.
     const double u = static_cast<double>(bits >> 11) * 0x1.0p-52 - 1.0;
-    const auto layer = static_cast<int>(bits & (kLayers - 1));
-    if (std::abs(u) < table.inside_ratio[static_cast<std::size_t>(layer)]) {
-      return u * table.edge[static_cast<std::size_t>(layer)];
-    }
+    const auto layer = static_cast<std::size_t>(bits & (kLayers - 1));
+    const double outer = table.edge[layer];
+    if (std::abs(u) < table.inside_ratio[layer]) return u * outer;
     if (layer == 0) return tail(rng, u < 0.0);
     // Between the layer's inner and outer edge: under the curve or not.
-    const double x = u * table.edge[static_cast<std::size_t>(layer)];
-    const double outer = table.edge[static_cast<std::size_t>(layer)];
-    const double inner = table.edge[static_cast<std::size_t>(layer) + 1];
+    const double x = u * outer;
+    const double inner = table.edge[layer + 1];
     const double f_outer = std::exp(-0.5 * (outer * outer - x * x));
     const double f_inner = std::exp(-0.5 * (inner * inner - x * x));
     if (f_inner + uniform(rng) * (f_outer - f_inner) < 1.0) return x;
