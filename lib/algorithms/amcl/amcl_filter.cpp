@@ -1,6 +1,7 @@
 #include "algorithms/amcl/amcl_filter.hpp"
 
 #include "algorithms/amcl/motion_model.hpp"
+#include "algorithms/amcl/short_readings.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -115,7 +116,7 @@ BeamModel& AmclFilter::beam_model() {
 bool AmclFilter::update(const geometry::Pose2& odometry, const LaserScan* scan) {
   if (!have_odometry_reference_) {
     have_odometry_reference_ = true;
-    particle_odometry_ = laser_odometry_ = odometry;
+    particle_odometry_ = laser_odometry_ = cluster_odometry_ = odometry;
     if (scan == nullptr) return false;
     laser_update(*scan);
     return true;
@@ -149,6 +150,8 @@ void AmclFilter::laser_update(const LaserScan& scan) {
   laser_update_pending_ = false;
   ++update_count_;
   prepare_beams(scan, parameters_.laser_max_beams, beams_);
+  const bool tracking = !searching_ && !clusters_.empty() && clusters_.front().weight >= 0.5;
+  if (parameters_.short_reading_filter && tracking) leave_out_short_readings(scan);
   LaserModelSettings settings = LaserModelSettings::from(parameters_);
   // Skipping beams few particles explain helps only a belief that is mostly
   // in one place; a spread one (global start) explains no beam in majority.
@@ -192,6 +195,23 @@ void AmclFilter::laser_update(const LaserScan& scan) {
   end_search_once_found();
 }
 
+void AmclFilter::leave_out_short_readings(const LaserScan& scan) {
+  // The estimate as of now: the clusters were taken before this motion.
+  const geometry::Pose2 estimate =
+      clusters_.front().mean.compose(cluster_odometry_.between(particle_odometry_));
+  const double margin = parameters_.short_reading_margin;
+  const BeamFits fits = classify_beams(*map_, estimate, beams_, margin);
+  const bool estimate_doubted =
+      static_cast<double>(fits.through_wall) >
+      parameters_.short_reading_through_wall_share * static_cast<double>(fits.returned);
+  if (fits.short_of_map == 0 || estimate_doubted) return;
+  // Left out before subsampling, so the beams kept are the scan's readings
+  // of the map, however few, not what survives of max_beams.
+  mark_short_readings(*map_, estimate, scan, margin, 4 * parameters_.laser_max_beams,
+                      short_readings_);
+  prepare_beams(scan, parameters_.laser_max_beams, beams_, &short_readings_);
+}
+
 void AmclFilter::resample() {
   ResampleSettings settings;
   settings.min_particles = parameters_.min_particles;
@@ -207,6 +227,7 @@ void AmclFilter::resample() {
 void AmclFilter::refresh_hypotheses() {
   clusterer_.cluster(particles_, parameters_.cluster_cell_size, parameters_.cluster_angle_size,
                      clusters_);
+  cluster_odometry_ = particle_odometry_;
 }
 
 std::vector<Hypothesis> AmclFilter::hypotheses() const {

@@ -77,6 +77,7 @@ class AmclFilter {
  private:
   void move_particles(const geometry::Pose2& odometry);
   void laser_update(const LaserScan& scan);
+  void leave_out_short_readings(const LaserScan& scan);
   void resample();
   void refresh_hypotheses();
   void end_search_once_found();
@@ -98,12 +99,14 @@ class AmclFilter {
   std::vector<Particle> particles_;
   std::vector<double> log_likelihoods_;
   PreparedBeams beams_;
+  std::vector<unsigned char> short_readings_;  // per reading of the scan being used
   std::vector<Hypothesis> clusters_;  // every cluster, heaviest first
 
   bool have_odometry_reference_ = false;
   bool laser_update_pending_ = true;  // the next scan updates regardless of motion
   geometry::Pose2 particle_odometry_;  // odometry the particles were last moved to
   geometry::Pose2 laser_odometry_;     // odometry at the last laser update
+  geometry::Pose2 cluster_odometry_;   // odometry the clusters were taken at
   std::size_t update_count_ = 0;
   bool searching_ = false;
   std::size_t search_particles_ = 0;  // KLD's ceiling while searching

@@ -284,6 +284,109 @@ TEST(AmclFilter, WithoutRecoveryAKidnapIsNotNoticed) {
   EXPECT_EQ(filter.injection_probability(), 0.0);
 }
 
+// People crowd round a robot turning in place near a wall: bodies (discs of
+// 0.2 m radius) in a ring `near`-`far` m away, shifting between scans, hide
+// most of every scan for two full turns. Then they leave and the robot
+// drives on.
+struct Crowd {
+  int people = 8;
+  double near = 0.5, far = 1.2;  // m, body centres from the robot
+  double body_radius = 0.25;     // m
+};
+
+struct CrowdRun {
+  double worst_error = 0.0;      // m, over every laser update
+  double worst_yaw_error = 0.0;  // rad
+  double final_error = 0.0;      // m, after the drive
+  double mean_matching_share = 0.0;  // of the beams, those that saw the room
+};
+
+void place_body(grid::OccupancyGrid& map, const Eigen::Vector2d& centre, double radius) {
+  const Eigen::Vector2i low = map.world_to_cell(centre - Eigen::Vector2d::Constant(radius));
+  const Eigen::Vector2i high = map.world_to_cell(centre + Eigen::Vector2d::Constant(radius));
+  for (int row = std::max(low.y(), 0); row <= std::min(high.y(), map.height() - 1); ++row) {
+    for (int col = std::max(low.x(), 0); col <= std::min(high.x(), map.width() - 1); ++col) {
+      if ((map.cell_centre({col, row}) - centre).norm() <= radius) map.set(col, row, grid::CellState::occupied);
+    }
+  }
+}
+
+CrowdRun turn_in_a_crowd(std::uint64_t seed, const Crowd& crowd, const AmclParameters& parameters) {
+  const auto map = test::make_room();
+  SimulatedRobot robot({1.0, 3.0, 0.0}, 100 + seed);  // 0.9 m from the west wall
+  AmclFilter filter(parameters, map, seed);
+  filter.set_pose(robot.truth(), Eigen::Vector3d(0.01, 0.01, 0.005).asDiagonal());
+  CrowdRun run;
+  const auto check = [&] {
+    const Hypothesis best = filter.best();
+    run.worst_error = std::max(run.worst_error, distance(best.mean, robot.truth()));
+    run.worst_yaw_error = std::max(
+        run.worst_yaw_error, std::abs(geometry::angle_difference(best.mean.yaw, robot.truth().yaw)));
+  };
+  std::mt19937_64 crowd_rng(seed);
+  std::uniform_real_distribution<double> reach(crowd.near, crowd.far), shuffle(-0.15, 0.15);
+  constexpr int steps = 126;  // two turns at 0.1 rad
+  std::size_t matching = 0, beams = 0;
+  for (int step = 0; step < steps; ++step) {
+    robot.move({0.0, 0.0, 0.1});
+    grid::OccupancyGrid crowded = *map;
+    for (int k = 0; k < crowd.people; ++k) {
+      const double bearing = 2 * pi * k / crowd.people + shuffle(crowd_rng);
+      place_body(crowded, robot.truth().translation() + reach(crowd_rng) * Eigen::Vector2d(std::cos(bearing), std::sin(bearing)), crowd.body_radius);
+    }
+    const LaserScan scan = robot.scan(crowded);
+    const LaserScan clear = test::simulate_scan(*map, robot.truth(), {.max_range = 12.0});
+    for (std::size_t b = 0; b < scan.ranges.size(); ++b) {
+      matching += std::abs(scan.ranges[b] - clear.ranges[b]) < 0.1 ? 1 : 0;
+    }
+    beams += scan.ranges.size();
+    if (filter.update(robot.odometry(), &scan)) check();
+  }
+  run.mean_matching_share = static_cast<double>(matching) / static_cast<double>(beams);
+  drive(filter, robot, *map, {{8.5, 5.0}, {8.5, 1.0}}, check);
+  run.final_error = distance(filter.predict(robot.odometry()).mean, robot.truth());
+  return run;
+}
+
+// A fifth of each scan sees the room; the rest are people who, seen from a
+// pose a little off, line up with the wall behind them. The heading may
+// wander by the motion model's spread while so little is seen (0.24 rad at
+// worst over seeds 1-12); the position holds (0.107 m at worst).
+TEST(AmclFilter, KeepsTheTrackTurningInACrowd) {
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const CrowdRun run = turn_in_a_crowd(seed, Crowd{}, AmclParameters{});
+    EXPECT_LT(run.mean_matching_share, 0.25) << "seed " << seed;  // as dense as claimed
+    EXPECT_LT(run.worst_error, 0.15) << "seed " << seed;
+    EXPECT_LT(run.worst_yaw_error, 0.3) << "seed " << seed;
+    EXPECT_LT(run.final_error, 0.1) << "seed " << seed;
+  }
+}
+
+// The control: scored beam by beam, the people pull the estimate off and
+// the drive after carries it metres away (11 of seeds 1-12).
+TEST(AmclFilter, WithoutTheShortReadingFilterACrowdPullsTheTrackAway) {
+  AmclParameters parameters;
+  parameters.short_reading_filter = false;
+  int lost = 0;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    lost += turn_in_a_crowd(seed, Crowd{}, parameters).final_error > 1.0 ? 1 : 0;
+  }
+  EXPECT_GE(lost, 4) << "of 6 runs";
+}
+
+// A ring so close that almost nothing of the room shows: no scan says which
+// way the robot faces, so the heading spreads, but the position must not run
+// off to where the bodies fit, and the room's first clear scans settle it.
+TEST(AmclFilter, FindsTheTrackAgainAfterACrowdHidesTheRoom) {
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const CrowdRun run =
+        turn_in_a_crowd(seed, Crowd{.people = 10, .near = 0.45, .far = 0.8}, AmclParameters{});
+    EXPECT_LT(run.mean_matching_share, 0.05) << "seed " << seed;
+    EXPECT_LT(run.worst_error, 0.2) << "seed " << seed;
+    EXPECT_LT(run.final_error, 0.1) << "seed " << seed;
+  }
+}
+
 std::vector<Particle> run_short(std::uint64_t filter_seed) {
   const auto map = test::make_room();
   SimulatedRobot robot({4.5, 3.5, -0.5}, 15);

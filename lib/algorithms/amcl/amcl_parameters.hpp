@@ -94,6 +94,20 @@ struct AmclParameters {
   double beam_skip_distance = 0.5;
   double beam_skip_threshold = 0.3;
   double beam_skip_error_threshold = 0.4;
+  // While tracking (the belief mostly in one place, no global search), a
+  // returned beam is left out, for both models, when from the estimate the map
+  // is free along it out to its range plus short_reading_margin: something the
+  // map does not have cut it short (short_readings.hpp; Fox, Burgard and
+  // Thrun's distance filter). Unlike beam skipping this holds however much of
+  // the scan goes, so a crowd hiding most of it for many scans cannot pull the
+  // track away; a scan with nothing left only moves the particles. Beams that
+  // run long (through a mapped wall) stay: they are the evidence against a
+  // wrong estimate, and when more than short_reading_through_wall_share of
+  // the returned beams do, the estimate is in doubt (a kidnapped robot) and
+  // nothing is left out. Not in 1.5 or ROS.
+  bool short_reading_filter = true;
+  double short_reading_margin = 0.2;  // m
+  double short_reading_through_wall_share = 0.2;
   // A scan weighs a particle by p(scan | pose)^scan_likelihood_exponent.
   // The models multiply beams as if independent; neighbouring beams are not
   // (one wall, one map error), so the plain product is overconfident: from a

@@ -4,19 +4,23 @@
 #include <stdexcept>
 
 namespace playerkit::amcl {
-namespace {
 
-bool usable(const LaserScan& scan, std::size_t i) {
-  const double range = scan.ranges[i];
-  return std::isfinite(scan.bearings[i]) && !std::isnan(range) && range >= scan.min_range;
+bool usable_reading(const LaserScan& scan, std::size_t index) {
+  const double range = scan.ranges[index];
+  return std::isfinite(scan.bearings[index]) && !std::isnan(range) && range >= scan.min_range;
 }
 
-}  // namespace
-
-void prepare_beams(const LaserScan& scan, std::size_t max_beams, PreparedBeams& out) {
+void prepare_beams(const LaserScan& scan, std::size_t max_beams, PreparedBeams& out,
+                   const std::vector<unsigned char>* left_out) {
   if (scan.ranges.size() != scan.bearings.size()) {
     throw std::invalid_argument("LaserScan: ranges and bearings differ in size");
   }
+  if (left_out != nullptr && left_out->size() != scan.ranges.size()) {
+    throw std::invalid_argument("prepare_beams: left_out differs in size from the scan");
+  }
+  const auto usable = [&](const LaserScan& s, std::size_t i) {
+    return usable_reading(s, i) && (left_out == nullptr || (*left_out)[i] == 0);
+  };
   out.max_range = scan.max_range;
   out.sensor_pose = scan.sensor_pose;
   out.ranges.clear();

@@ -29,10 +29,16 @@ struct PreparedBeams {
   std::size_t size() const { return ranges.size(); }
 };
 
+// A reading the laser models can use: finite bearing, a range that is not
+// NaN and not below min_range (at or above max_range it is a no-return).
+bool usable_reading(const LaserScan& scan, std::size_t index);
+
 // Keeps at most `max_beams` readings, evenly spread over the scan (first and
-// last included), skipping readings that are not finite or below min_range.
-// Reuses `out`'s storage. Throws std::invalid_argument if ranges and
-// bearings differ in size.
-void prepare_beams(const LaserScan& scan, std::size_t max_beams, PreparedBeams& out);
+// last included), skipping readings that are not finite or below min_range,
+// and those `left_out` marks (one flag per reading, when given). Reuses
+// `out`'s storage. Throws std::invalid_argument if ranges and bearings (or
+// left_out) differ in size.
+void prepare_beams(const LaserScan& scan, std::size_t max_beams, PreparedBeams& out,
+                   const std::vector<unsigned char>* left_out = nullptr);
 
 }  // namespace playerkit::amcl

@@ -62,12 +62,34 @@ TEST(PrepareBeams, MarksNoReturnAndSkipsUnusableReadings) {
   EXPECT_EQ(beams.ranges[4], 2.0);
 }
 
+// Left-out readings do not take a place in the budget: the kept beams
+// spread over what remains.
+TEST(PrepareBeams, SpreadsOverTheReadingsNotLeftOut) {
+  const LaserScan scan = straight_scan(100);
+  std::vector<unsigned char> left_out(100, 0);
+  for (std::size_t i = 0; i < 80; ++i) left_out[i] = 1;
+  PreparedBeams beams;
+  prepare_beams(scan, 10, beams, &left_out);
+  ASSERT_EQ(beams.size(), 10u);
+  EXPECT_EQ(beams.ranges.front(), 81.0);
+  EXPECT_EQ(beams.ranges.back(), 100.0);
+  for (std::size_t i = 1; i < beams.size(); ++i) {
+    EXPECT_GE(beams.ranges[i] - beams.ranges[i - 1], 2.0);
+  }
+  left_out.assign(100, 1);
+  prepare_beams(scan, 10, beams, &left_out);
+  EXPECT_EQ(beams.size(), 0u);
+}
+
 TEST(PrepareBeams, RejectsMismatchedArrays) {
   LaserScan scan;
   scan.ranges = {1.0, 2.0};
   scan.bearings = {0.0};
   PreparedBeams beams;
   EXPECT_THROW(prepare_beams(scan, 30, beams), std::invalid_argument);
+  scan.bearings = {0.0, 0.1};
+  const std::vector<unsigned char> left_out(3, 0);
+  EXPECT_THROW(prepare_beams(scan, 30, beams, &left_out), std::invalid_argument);
 }
 
 }  // namespace laser_scan_test
