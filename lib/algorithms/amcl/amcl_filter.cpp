@@ -199,15 +199,16 @@ void AmclFilter::leave_out_short_readings(const LaserScan& scan) {
   // The estimate as of now: the clusters were taken before this motion.
   const geometry::Pose2 estimate =
       clusters_.front().mean.compose(cluster_odometry_.between(particle_odometry_));
-  const double margin = parameters_.short_reading_margin;
-  const BeamFits fits = classify_beams(*map_, estimate, beams_, margin);
+  const ReadingMargins margins{.short_of_map = parameters_.short_reading_margin,
+                               .through_wall = parameters_.short_reading_through_wall_margin};
+  const BeamFits fits = classify_beams(*map_, estimate, beams_, margins);
   const bool estimate_doubted =
       static_cast<double>(fits.through_wall) >
       parameters_.short_reading_through_wall_share * static_cast<double>(fits.returned);
   if (fits.short_of_map == 0 || estimate_doubted) return;
   // Left out before subsampling, so the beams kept are the scan's readings
   // of the map, however few, not what survives of max_beams.
-  mark_short_readings(*map_, estimate, scan, margin, 4 * parameters_.laser_max_beams,
+  mark_short_readings(*map_, estimate, scan, margins, 4 * parameters_.laser_max_beams,
                       short_readings_);
   prepare_beams(scan, parameters_.laser_max_beams, beams_, &short_readings_);
 }

@@ -48,7 +48,8 @@ void validate(const AmclParameters& p) {
   require(is_positive(p.sigma_hit), "sigma_hit must be positive");
   require(is_positive(p.lambda_short), "lambda_short must be positive");
   require(is_positive(p.likelihood_max_distance), "likelihood_max_distance must be positive");
-  require(is_non_negative(p.short_reading_margin), "short_reading_margin must be non-negative");
+  require(is_non_negative(p.short_reading_margin) && is_non_negative(p.short_reading_through_wall_margin),
+          "short_reading_margin and short_reading_through_wall_margin must be non-negative");
   require(is_probability(p.short_reading_through_wall_share),
           "short_reading_through_wall_share must lie in [0, 1]");
   require(is_positive(p.scan_likelihood_exponent) && p.scan_likelihood_exponent <= 1.0,

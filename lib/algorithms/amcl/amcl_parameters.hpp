@@ -101,12 +101,14 @@ struct AmclParameters {
   // Thrun's distance filter). Unlike beam skipping this holds however much of
   // the scan goes, so a crowd hiding most of it for many scans cannot pull the
   // track away; a scan with nothing left only moves the particles. Beams that
-  // run long (through a mapped wall) stay: they are the evidence against a
-  // wrong estimate, and when more than short_reading_through_wall_share of
-  // the returned beams do, the estimate is in doubt (a kidnapped robot) and
-  // nothing is left out. Not in 1.5 or ROS.
+  // run long (past a mapped wall by more than short_reading_through_wall_margin)
+  // stay: they are the evidence against a wrong estimate, and when more than
+  // short_reading_through_wall_share of the returned beams do, the estimate
+  // is in doubt (a kidnapped robot) and nothing is left out. Not in 1.5 or
+  // ROS.
   bool short_reading_filter = true;
-  double short_reading_margin = 0.2;  // m
+  double short_reading_margin = 0.2;               // m
+  double short_reading_through_wall_margin = 0.5;  // m
   double short_reading_through_wall_share = 0.2;
   // A scan weighs a particle by p(scan | pose)^scan_likelihood_exponent.
   // The models multiply beams as if independent; neighbouring beams are not

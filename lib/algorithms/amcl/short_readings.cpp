@@ -8,8 +8,8 @@
 namespace playerkit::amcl {
 
 ReadingFit classify_reading(const grid::OccupancyGrid& map, const geometry::Pose2& sensor,
-                            double angle, double range, double margin) {
-  const double reach = range + margin;
+                            double angle, double range, const ReadingMargins& margins) {
+  const double reach = range + margins.short_of_map;
   const double inverse_resolution = 1.0 / map.resolution();
   const Eigen::Vector2d from = (sensor.translation() - map.origin()) * inverse_resolution;
   const Eigen::Vector2d to =
@@ -19,7 +19,7 @@ ReadingFit classify_reading(const grid::OccupancyGrid& map, const geometry::Pose
     const bool inside = map.contains(cell);
     const grid::CellState state = inside ? map.at(cell) : grid::CellState::unknown;
     if (state == grid::CellState::free) return true;
-    const bool through = state == grid::CellState::occupied && entry * reach < range - margin;
+    const bool through = state == grid::CellState::occupied && entry * reach < range - margins.through_wall;
     fit = through ? ReadingFit::through_wall : ReadingFit::fits;
     return false;
   });
@@ -27,13 +27,13 @@ ReadingFit classify_reading(const grid::OccupancyGrid& map, const geometry::Pose
 }
 
 BeamFits classify_beams(const grid::OccupancyGrid& map, const geometry::Pose2& robot,
-                        const PreparedBeams& beams, double margin) {
+                        const PreparedBeams& beams, const ReadingMargins& margins) {
   const geometry::Pose2 sensor = robot.compose(beams.sensor_pose);
   BeamFits fits;
   for (std::size_t b = 0; b < beams.size(); ++b) {
     if (beams.no_return[b] != 0) continue;
     ++fits.returned;
-    switch (classify_reading(map, sensor, robot.yaw + beams.robot_angle[b], beams.ranges[b], margin)) {
+    switch (classify_reading(map, sensor, robot.yaw + beams.robot_angle[b], beams.ranges[b], margins)) {
       case ReadingFit::short_of_map: ++fits.short_of_map; break;
       case ReadingFit::through_wall: ++fits.through_wall; break;
       case ReadingFit::fits: break;
@@ -43,7 +43,8 @@ BeamFits classify_beams(const grid::OccupancyGrid& map, const geometry::Pose2& r
 }
 
 std::size_t mark_short_readings(const grid::OccupancyGrid& map, const geometry::Pose2& robot,
-                                const LaserScan& scan, double margin, std::size_t most_checked,
+                                const LaserScan& scan, const ReadingMargins& margins,
+                                std::size_t most_checked,
                                 std::vector<unsigned char>& out) {
   const geometry::Pose2 sensor = robot.compose(scan.sensor_pose);
   const std::size_t readings = std::min(scan.ranges.size(), scan.bearings.size());
@@ -65,7 +66,7 @@ std::size_t mark_short_readings(const grid::OccupancyGrid& map, const geometry::
     const double range = scan.ranges[i];
     const bool is_short = range < scan.max_range &&
                           classify_reading(map, sensor, sensor.yaw + scan.bearings[i], range,
-                                           margin) == ReadingFit::short_of_map;
+                                           margins) == ReadingFit::short_of_map;
     out[i] = is_short ? 1 : 0;
     short_count += is_short ? 1 : 0;
   }

@@ -21,17 +21,25 @@
 
 namespace playerkit::amcl {
 
+// How far a reading may fall short of the map, or run past a wall, before
+// it counts as either (metres). The second is wider: a wall a little behind
+// a reading is an estimate a little off, which is not yet doubt.
+struct ReadingMargins {
+  double short_of_map = 0.2;
+  double through_wall = 0.5;
+};
+
 enum class ReadingFit {
-  fits,          // ends within `margin` of where the map says, or cannot be told
-  short_of_map,  // the map is free from the sensor to range + margin
-  through_wall,  // an occupied cell lies more than `margin` before the end
+  fits,          // ends near where the map says, or cannot be told
+  short_of_map,  // the map is free from the sensor to range + short_of_map
+  through_wall,  // an occupied cell lies more than through_wall before the end
 };
 
 // How a reading of `range` from `sensor` (world frame) along `angle` (world
 // frame) fits the map. Unknown cells and the map's edge are not known to be
 // free: a ray meeting them first fits.
 ReadingFit classify_reading(const grid::OccupancyGrid& map, const geometry::Pose2& sensor,
-                            double angle, double range, double margin);
+                            double angle, double range, const ReadingMargins& margins);
 
 struct BeamFits {
   std::size_t returned = 0;  // beams with a return
@@ -42,7 +50,7 @@ struct BeamFits {
 // The prepared `beams` classified from `robot`: the cheap question, asked
 // first, so a clean scan costs max_beams casts and not one per reading.
 BeamFits classify_beams(const grid::OccupancyGrid& map, const geometry::Pose2& robot,
-                        const PreparedBeams& beams, double margin);
+                        const PreparedBeams& beams, const ReadingMargins& margins);
 
 // Which readings of `scan`, taken at `robot`, to leave out when preparing
 // beams: at most `most_checked` usable readings, evenly spread, are checked,
@@ -50,7 +58,8 @@ BeamFits classify_beams(const grid::OccupancyGrid& map, const geometry::Pose2& r
 // (bounding the cost on scans of many readings). Reuses `out`'s storage;
 // returns how many checked readings are short.
 std::size_t mark_short_readings(const grid::OccupancyGrid& map, const geometry::Pose2& robot,
-                                const LaserScan& scan, double margin, std::size_t most_checked,
+                                const LaserScan& scan, const ReadingMargins& margins,
+                                std::size_t most_checked,
                                 std::vector<unsigned char>& out);
 
 }  // namespace playerkit::amcl
