@@ -7,11 +7,19 @@
 namespace playerkit::amcl {
 
 LikelihoodFieldModel::LikelihoodFieldModel(const grid::OccupancyGrid& map, double max_distance)
-    : width_(map.width()),
-      height_(map.height()),
-      resolution_(map.resolution()),
-      origin_(map.origin()),
-      distances_(map, max_distance) {}
+    : width_(map.width()), height_(map.height()), resolution_(map.resolution()), origin_(map.origin()) {
+  const grid::DistanceMap distances(map, max_distance);
+  max_distance_ = distances.max_distance();
+  const double codes_per_metre = max_distance_ > 0.0 ? (kDistanceCodes - 1) / max_distance_ : 0.0;
+  distance_codes_.resize(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
+  for (int row = 0; row < height_; ++row) {
+    for (int col = 0; col < width_; ++col) {
+      const double code = std::min(std::round(distances.at(col, row) * codes_per_metre), kDistanceCodes - 1.0);
+      distance_codes_[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
+                      static_cast<std::size_t>(col)] = static_cast<std::uint8_t>(code);
+    }
+  }
+}
 
 double LikelihoodFieldModel::log_endpoint_likelihood(double distance, double max_range,
                                                      const LaserModelSettings& settings) {
@@ -26,16 +34,11 @@ double LikelihoodFieldModel::log_endpoint_likelihood(double distance, double max
 
 void LikelihoodFieldModel::refresh_table(const LaserModelSettings& settings, double max_range) {
   if (table_valid_ && settings == table_settings_ && max_range == table_max_range_) return;
-  log_table_.resize(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
-  for (int row = 0; row < height_; ++row) {
-    for (int col = 0; col < width_; ++col) {
-      log_table_[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
-                 static_cast<std::size_t>(col)] =
-          static_cast<float>(log_endpoint_likelihood(distances_.at(col, row), max_range, settings));
-    }
+  for (int code = 0; code < kDistanceCodes; ++code) {
+    const double distance = max_distance_ * code / (kDistanceCodes - 1);
+    log_by_code_[static_cast<std::size_t>(code)] =
+        static_cast<float>(log_endpoint_likelihood(distance, max_range, settings));
   }
-  log_outside_ =
-      static_cast<float>(log_endpoint_likelihood(distances_.max_distance(), max_range, settings));
   table_settings_ = settings;
   table_max_range_ = max_range;
   table_valid_ = true;
@@ -62,7 +65,9 @@ void LikelihoodFieldModel::log_likelihoods(std::span<const Particle> particles,
   const double inverse_resolution = 1.0 / resolution_;
   const double* hx = hit_x_.data();
   const double* hy = hit_y_.data();
-  const float* table = log_table_.data();
+  const std::uint8_t* codes = distance_codes_.data();
+  const float* log_by_code = log_by_code_.data();
+  const float log_outside = log_by_code_[kDistanceCodes - 1];
 
   const auto endpoint_value = [&](const geometry::Pose2& pose, auto&& visit) {
     const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
@@ -74,9 +79,9 @@ void LikelihoodFieldModel::log_likelihoods(std::span<const Particle> particles,
       const int col = static_cast<int>(std::floor(base_col + cr * hx[b] - sr * hy[b]));
       const int row = static_cast<int>(std::floor(base_row + sr * hx[b] + cr * hy[b]));
       const bool inside = col >= 0 && row >= 0 && col < width_ && row < height_;
-      visit(b, inside ? table[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
-                              static_cast<std::size_t>(col)]
-                      : log_outside_);
+      visit(b, inside ? log_by_code[codes[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
+                                          static_cast<std::size_t>(col)]]
+                      : log_outside);
     }
   };
 
@@ -95,6 +100,7 @@ void LikelihoodFieldModel::log_likelihoods(std::span<const Particle> particles,
       log_endpoint_likelihood(settings.beam_skip_distance, beams.max_range, settings));
   beam_values_.resize(particles.size() * hits);
   explained_weight_.assign(hits, 0.0);
+  double* explained_weight = explained_weight_.data();
   double total_weight = 0.0;
   for (std::size_t i = 0; i < particles.size(); ++i) {
     float* values = beam_values_.data() + i * hits;
@@ -102,21 +108,25 @@ void LikelihoodFieldModel::log_likelihoods(std::span<const Particle> particles,
     total_weight += weight;
     endpoint_value(particles[i].pose, [&](std::size_t b, float value) {
       values[b] = value;
-      if (value >= explained) explained_weight_[b] += weight;
+      explained_weight[b] += value >= explained ? weight : 0.0;
     });
   }
-  std::size_t skipped = 0;
+  kept_beams_.clear();
   for (std::size_t b = 0; b < hits; ++b) {
-    if (explained_weight_[b] < settings.beam_skip_threshold * total_weight) ++skipped;
+    if (explained_weight[b] >= settings.beam_skip_threshold * total_weight) kept_beams_.push_back(b);
   }
+  const std::size_t skipped = hits - kept_beams_.size();
   const bool skip = static_cast<double>(skipped) <= settings.beam_skip_error_threshold * static_cast<double>(hits);
+  if (!skip) {
+    kept_beams_.resize(hits);
+    for (std::size_t b = 0; b < hits; ++b) kept_beams_[b] = b;
+  }
+  const std::size_t* kept = kept_beams_.data();
+  const std::size_t kept_count = kept_beams_.size();
   for (std::size_t i = 0; i < particles.size(); ++i) {
     const float* values = beam_values_.data() + i * hits;
     double sum = 0.0;
-    for (std::size_t b = 0; b < hits; ++b) {
-      if (skip && explained_weight_[b] < settings.beam_skip_threshold * total_weight) continue;
-      sum += values[b];
-    }
+    for (std::size_t k = 0; k < kept_count; ++k) sum += values[kept[k]];
     out[i] = sum;
   }
 }

@@ -84,6 +84,26 @@ TEST(LikelihoodFieldModel, EndpointsOffTheMapScoreAsFarFromAnything) {
               1e-6);
 }
 
+// Distances are kept to 255ths of the cap: an endpoint 0.35 m (seven cells)
+// from the east wall's first occupied cell scores as 0.35 m within 4 mm.
+TEST(LikelihoodFieldModel, AnEndpointScoresByItsDistanceWithinFourMillimetres) {
+  const auto map = test::make_room();
+  LikelihoodFieldModel model(*map, 2.0);
+  LaserScan scan;
+  scan.ranges = {1.0};
+  scan.bearings = {0.0};
+  scan.sensor_pose = {0.0, 0.0, 0.0};
+  // The endpoint at (9.575, 3.025), a cell centre; the wall's cells start at
+  // 9.9, their first centre at 9.925.
+  const std::vector<Particle> particle{{{8.575, 3.025, 0.0}, 1.0}};
+  const auto s = scores(model, particle, scan);
+  const auto at = [](double distance) {
+    return LikelihoodFieldModel::log_endpoint_likelihood(distance, 8.0, LaserModelSettings{});
+  };
+  EXPECT_NEAR(s[0], at(0.35), std::abs(at(0.354) - at(0.35)));
+  EXPECT_GT(std::abs(at(0.354) - at(0.35)), 1e-3);  // the tolerance is not vacuous
+}
+
 TEST(LikelihoodFieldModel, SensorOffsetIsApplied) {
   // The same world endpoints seen by a laser mounted 0.5 m forward: the
   // robot pose 0.5 m behind the true sensor scores like the true pose.
