@@ -67,10 +67,11 @@ void check_image_size(const std::filesystem::path& image) {
 grid::OccupancyGrid load_yaml_map(const std::filesystem::path& yaml_file) {
   const MapYaml description = parse_map_yaml(read_text(yaml_file), yaml_file);
   check_image_size(description.image);
-  const std::optional<GreyImage> image = read_grey_image(description.image);
+  std::string why;
+  const std::optional<GreyImage> image = read_grey_image(description.image, &why);
   if (!image) {
     throw MapFileError(yaml_file, description.image_line, description.image_column,
-                       std::string("cannot read image '") + text::excerpt(description.image.string()) + "'");
+                       std::string("cannot read image '") + text::excerpt(description.image.string()) + "': " + why);
   }
   return grid_from_image(*image, description.resolution, description.origin,
                          {description.negate, description.occupied_threshold,
@@ -88,8 +89,9 @@ grid::OccupancyGrid load_image_map(const std::filesystem::path& image_file,
   }
   require_regular_file(image_file);
   check_image_size(image_file);
-  const std::optional<GreyImage> image = read_grey_image(image_file);
-  if (!image) throw MapFileError(image_file, "cannot read as an image");
+  std::string why;
+  const std::optional<GreyImage> image = read_grey_image(image_file, &why);
+  if (!image) throw MapFileError(image_file, "cannot read as an image: " + why);
   if (options.origin && !options.origin->allFinite()) {
     throw MapFileError(image_file, "the map's origin must be finite");
   }

@@ -160,7 +160,12 @@ TEST_F(MapFileTest, PlainImageErrors) {
   EXPECT_TRUE(starts_with(error_of(file, {.resolution = -1.0}), file.string() + ": "));
   EXPECT_EQ(error_of(path("missing.pgm"), {.resolution = 1.0}), path("missing.pgm").string() + ": no such file");
   const fs::path junk = write_text("junk.png", "not an image");
-  EXPECT_EQ(error_of(junk, {.resolution = 1.0}), junk.string() + ": cannot read as an image");
+  EXPECT_EQ(error_of(junk, {.resolution = 1.0}),
+            junk.string() + ": cannot read as an image: not a PNG, PGM, PPM or PBM image (convert other formats to PNG)");
+  // What is wrong with a damaged image is said.
+  const fs::path cut = write_text("cut.pgm", "P5 4 4 255\nab");
+  EXPECT_EQ(error_of(cut, {.resolution = 1.0}),
+            cut.string() + ": cannot read as an image: PNM: the pixels are truncated (2 of 16 bytes)");
 }
 
 TEST_F(MapFileTest, YamlGivesResolutionOriginNegateAndThresholds) {
@@ -209,7 +214,7 @@ TEST_F(MapFileTest, YamlErrorsCarryLineAndColumn) {
       {good_head + "origin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.1\nfree_thresh: 0.196\n",
        "6:14: free_thresh is above occupied_thresh"},
       {"image: nothing.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n" + good_tail,
-       "1:8: cannot read image '" + path("nothing.pgm").string() + "'"},
+       "1:8: cannot read image '" + path("nothing.pgm").string() + "': no such file"},
       {"image: m.pgm\n  resolution: 0.05\n", "2:3: indented line: nested values are not supported in a map file"},
   };
   for (const Case& c : cases) {

@@ -2,36 +2,38 @@
 
 #include "files/output_file.hpp"
 
-#include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
+#include "image/png.hpp"
+#include "image/pnm.hpp"
 
 #include <algorithm>
+#include <fstream>
+#include <iterator>
 #include <system_error>
 #include <string>
 
 namespace playerkit::map {
 
-std::optional<GreyImage> read_grey_image(const std::filesystem::path& file) {
-  // OpenCV logs a warning for a missing file; callers report it better.
+std::optional<GreyImage> read_grey_image(const std::filesystem::path& file, std::string* why) {
+  const auto fail = [why](std::string reason) -> std::optional<GreyImage> {
+    if (why != nullptr) *why = std::move(reason);
+    return std::nullopt;
+  };
   std::error_code error;
-  if (!std::filesystem::is_regular_file(file, error)) return std::nullopt;
-  cv::Mat image;
-  try {
-    image = cv::imread(file.string(), cv::IMREAD_GRAYSCALE);
-  } catch (const cv::Exception&) {
-    return std::nullopt;  // a corrupt file: the caller reports it with its own context
+  if (!std::filesystem::exists(file, error)) return fail("no such file");
+  if (!std::filesystem::is_regular_file(file, error)) return fail("not a regular file");
+  std::ifstream in(file, std::ios::binary);
+  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) return fail("cannot read it");
+  image::Decoded decoded;
+  if (image::is_png(bytes)) {
+    decoded = image::decode_png(bytes);
+  } else if (image::is_pnm(bytes)) {
+    decoded = image::decode_pnm(bytes);
+  } else {
+    return fail("not a PNG, PGM, PPM or PBM image (convert other formats to PNG)");
   }
-  if (image.empty() || image.type() != CV_8UC1) return std::nullopt;
-  GreyImage grey;
-  grey.width = image.cols;
-  grey.height = image.rows;
-  grey.pixels.resize(static_cast<std::size_t>(image.cols) * static_cast<std::size_t>(image.rows));
-  for (int row = 0; row < image.rows; ++row) {
-    const std::uint8_t* source = image.ptr<std::uint8_t>(row);
-    std::copy(source, source + image.cols,
-              grey.pixels.begin() + static_cast<std::ptrdiff_t>(row) * image.cols);
-  }
-  return grey;
+  if (!decoded.ok()) return fail(decoded.error);
+  return std::move(decoded.image);
 }
 
 bool write_pgm(const GreyImage& image, const std::filesystem::path& file) {

@@ -1,25 +1,23 @@
 #pragma once
 // Internal: 8-bit grey images and their meaning as occupancy, both ways.
-// Only map_image.cpp touches OpenCV.
 
 #include "algorithms/grid/occupancy_grid.hpp"
+#include "image/grey_image.hpp"
 
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace playerkit::map {
 
-struct GreyImage {
-  int width = 0;
-  int height = 0;
-  std::vector<std::uint8_t> pixels;  // row-major, row 0 at the TOP, as in the file
-};
+using GreyImage = image::GreyImage;  // row 0 at the TOP, as in the file
 
-// Any format imgcodecs reads; colour is converted to grey and deeper images
-// to 8 bits. nullopt if the file cannot be read as an image.
-std::optional<GreyImage> read_grey_image(const std::filesystem::path& file);
+// A PNG or PNM file (lib/image); colour is converted to grey and deeper
+// images to 8 bits. nullopt if the file cannot be read as such an image,
+// with the reason in `why` when given.
+std::optional<GreyImage> read_grey_image(const std::filesystem::path& file, std::string* why = nullptr);
 
 // Binary PGM (P5). Returns false if the file cannot be written.
 bool write_pgm(const GreyImage& image, const std::filesystem::path& file);

@@ -1,12 +1,12 @@
 #include "map/trajectory_plot.hpp"
 
 #include "files/output_file.hpp"
+#include "image/png.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
@@ -246,12 +246,10 @@ void write_trajectory_plot(const std::filesystem::path& png, const grid::Occupan
   }
   draw_legend(image, paths, !scan_points.empty(), pose_drawn, thickness);
 
-  std::vector<std::uint8_t> encoded;
-  try {
-    cv::imencode(".png", image, encoded);
-  } catch (const cv::Exception& error) {
-    throw MapFileError(png, std::string("cannot encode the plot: ") + error.what());
-  }
+  cv::Mat rgb;
+  cv::cvtColor(image, rgb, cv::COLOR_BGR2RGB);
+  const std::vector<std::uint8_t> encoded =
+      playerkit::image::encode_png({rgb.data, rgb.total() * 3}, rgb.cols, rgb.rows, 3);
   try {
     files::OutputFile out(png, {.compression = files::Compression::kNone});
     out.stream().write(reinterpret_cast<const char*>(encoded.data()),
