@@ -179,7 +179,9 @@ void AmclFilter::laser_update(const LaserScan& scan) {
     }
     recovery_.observe((highest + std::log(expected)) / static_cast<double>(informative_beams));
 
-    const double exponent = parameters_.scan_likelihood_exponent;
+    const double exponent = parameters_.laser_model == LaserModelType::beam
+                                ? parameters_.beam_scan_likelihood_exponent
+                                : parameters_.scan_likelihood_exponent;
     for (std::size_t i = 0; i < particles_.size(); ++i) {
       particles_[i].weight *= std::exp(exponent * (log_likelihoods_[i] - highest));
     }

@@ -54,6 +54,8 @@ void validate(const AmclParameters& p) {
           "short_reading_through_wall_share must lie in [0, 1]");
   require(is_positive(p.scan_likelihood_exponent) && p.scan_likelihood_exponent <= 1.0,
           "scan_likelihood_exponent must lie in (0, 1]");
+  require(is_positive(p.beam_scan_likelihood_exponent) && p.beam_scan_likelihood_exponent <= 1.0,
+          "beam_scan_likelihood_exponent must lie in (0, 1]");
   require(is_non_negative(p.update_min_distance) && is_non_negative(p.update_min_angle),
           "update thresholds must be non-negative");
   require(p.resample_interval >= 1, "resample_interval must be at least 1");

@@ -35,6 +35,8 @@ TEST(AmclParameters, RejectsNonsense) {
   rejects([](AmclParameters& p) { p.laser_max_beams = 0; });
   rejects([](AmclParameters& p) { p.scan_likelihood_exponent = 0.0; });
   rejects([](AmclParameters& p) { p.scan_likelihood_exponent = 1.5; });
+  rejects([](AmclParameters& p) { p.beam_scan_likelihood_exponent = 0.0; });
+  rejects([](AmclParameters& p) { p.beam_scan_likelihood_exponent = 1.5; });
 }
 
 }  // namespace amcl_parameters_test
