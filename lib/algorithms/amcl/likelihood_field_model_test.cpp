@@ -72,14 +72,19 @@ TEST(LikelihoodFieldModel, NoReturnReadingsNeitherRewardNorPenalise) {
   for (std::size_t i = 0; i < particles.size(); ++i) EXPECT_DOUBLE_EQ(before[i], after[i]);
 }
 
+// One reading straight ahead, the laser at the robot's centre.
+LaserScan one_reading(double range) {
+  LaserScan scan;
+  scan.ranges = {range};
+  scan.bearings = {0.0};
+  return scan;
+}
+
 TEST(LikelihoodFieldModel, EndpointsOffTheMapScoreAsFarFromAnything) {
   const auto map = test::make_room();
   LikelihoodFieldModel model(*map, 2.0);
-  LaserScan scan;
-  scan.ranges = {5.0};
-  scan.bearings = {0.0};
   const std::vector<Particle> outside{{{-20.0, -20.0, 0.0}, 1.0}};
-  const auto s = scores(model, outside, scan);
+  const auto s = scores(model, outside, one_reading(5.0));
   EXPECT_NEAR(s[0], LikelihoodFieldModel::log_endpoint_likelihood(2.0, 8.0, LaserModelSettings{}),
               1e-6);
 }
@@ -89,14 +94,10 @@ TEST(LikelihoodFieldModel, EndpointsOffTheMapScoreAsFarFromAnything) {
 TEST(LikelihoodFieldModel, AnEndpointScoresByItsDistanceWithinFourMillimetres) {
   const auto map = test::make_room();
   LikelihoodFieldModel model(*map, 2.0);
-  LaserScan scan;
-  scan.ranges = {1.0};
-  scan.bearings = {0.0};
-  scan.sensor_pose = {0.0, 0.0, 0.0};
   // The endpoint at (9.575, 3.025), a cell centre; the wall's cells start at
   // 9.9, their first centre at 9.925.
   const std::vector<Particle> particle{{{8.575, 3.025, 0.0}, 1.0}};
-  const auto s = scores(model, particle, scan);
+  const auto s = scores(model, particle, one_reading(1.0));
   const auto at = [](double distance) {
     return LikelihoodFieldModel::log_endpoint_likelihood(distance, 8.0, LaserModelSettings{});
   };
