@@ -1,7 +1,6 @@
 #include "algorithms/amcl/amcl_filter.hpp"
 
 #include "algorithms/amcl/motion_model.hpp"
-#include "algorithms/amcl/short_readings.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -203,15 +202,16 @@ void AmclFilter::leave_out_short_readings(const LaserScan& scan) {
       clusters_.front().mean.compose(cluster_odometry_.between(particle_odometry_));
   const ReadingMargins margins{.short_of_map = parameters_.short_reading_margin,
                                .through_wall = parameters_.short_reading_through_wall_margin};
-  const BeamFits fits = classify_beams(*map_, estimate, beams_, margins);
+  if (!reading_classifier_) reading_classifier_ = std::make_unique<ReadingClassifier>(*map_);
+  const BeamFits fits = reading_classifier_->classify_beams(estimate, beams_, margins);
   const bool estimate_doubted =
       static_cast<double>(fits.through_wall) >
       parameters_.short_reading_through_wall_share * static_cast<double>(fits.returned);
   if (fits.short_of_map == 0 || estimate_doubted) return;
   // Left out before subsampling, so the beams kept are the scan's readings
   // of the map, however few, not what survives of max_beams.
-  mark_short_readings(*map_, estimate, scan, margins, 4 * parameters_.laser_max_beams,
-                      short_readings_);
+  reading_classifier_->mark_short_readings(estimate, scan, margins, 4 * parameters_.laser_max_beams,
+                                           short_readings_);
   prepare_beams(scan, parameters_.laser_max_beams, beams_, &short_readings_);
 }
 

@@ -13,6 +13,7 @@
 #include "algorithms/amcl/likelihood_field_model.hpp"
 #include "algorithms/amcl/particle_set.hpp"
 #include "algorithms/amcl/pose_estimate.hpp"
+#include "algorithms/amcl/short_readings.hpp"
 #include "algorithms/geometry/pose2.hpp"
 #include "algorithms/grid/occupancy_grid.hpp"
 
@@ -92,6 +93,7 @@ class AmclFilter {
   FreeSpaceSampler free_space_;
   std::unique_ptr<BeamModel> beam_model_;  // built on first use
   std::unique_ptr<LikelihoodFieldModel> likelihood_field_;  // built on first use
+  std::unique_ptr<ReadingClassifier> reading_classifier_;  // built on first use
   AugmentedRecovery recovery_;
   AdaptiveResampler resampler_;
   PoseClusterer clusterer_;

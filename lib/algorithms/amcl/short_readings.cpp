@@ -1,39 +1,40 @@
 #include "algorithms/amcl/short_readings.hpp"
 
-#include "algorithms/grid/grid_traversal.hpp"
-
 #include <algorithm>
 #include <cmath>
 
 namespace playerkit::amcl {
 
-ReadingFit classify_reading(const grid::OccupancyGrid& map, const geometry::Pose2& sensor,
-                            double angle, double range, const ReadingMargins& margins) {
+ReadingClassifier::ReadingClassifier(const grid::OccupancyGrid& map)
+    : map_(map), caster_(map, grid::RayStop::occupied_or_unknown) {}
+
+ReadingFit ReadingClassifier::classify(const geometry::Pose2& sensor, double angle, double range,
+                                       const ReadingMargins& margins) const {
   const double reach = range + margins.short_of_map;
-  const double inverse_resolution = 1.0 / map.resolution();
-  const Eigen::Vector2d from = (sensor.translation() - map.origin()) * inverse_resolution;
-  const Eigen::Vector2d to =
-      from + (reach * inverse_resolution) * Eigen::Vector2d(std::cos(angle), std::sin(angle));
-  ReadingFit fit = ReadingFit::short_of_map;
-  grid::detail::traverse_segment(from, to, [&](const Eigen::Vector2i& cell, double entry) {
-    const bool inside = map.contains(cell);
-    const grid::CellState state = inside ? map.at(cell) : grid::CellState::unknown;
-    if (state == grid::CellState::free) return true;
-    const bool through = state == grid::CellState::occupied && entry * reach < range - margins.through_wall;
-    fit = through ? ReadingFit::through_wall : ReadingFit::fits;
-    return false;
-  });
-  return fit;
+  const Eigen::Vector2d from = sensor.translation();
+  const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
+  if (!map_.contains(map_.world_to_cell(from))) return ReadingFit::fits;
+  const double met = caster_.range(from, direction, reach);
+  if (met >= reach) {
+    // Nothing but free cells out to the reach, unless the ray left the map
+    // first (the caster answers that alike): beyond the edge is unknown.
+    const Eigen::Vector2i end = map_.world_to_cell(from + reach * direction);
+    return map_.contains(end) ? ReadingFit::short_of_map : ReadingFit::fits;
+  }
+  // The cell the ray stopped in: a hair past where it entered it.
+  const Eigen::Vector2i stop = map_.world_to_cell(from + (met + 1e-6 * map_.resolution()) * direction);
+  const bool occupied = map_.contains(stop) && map_.at(stop) == grid::CellState::occupied;
+  return occupied && met < range - margins.through_wall ? ReadingFit::through_wall : ReadingFit::fits;
 }
 
-BeamFits classify_beams(const grid::OccupancyGrid& map, const geometry::Pose2& robot,
-                        const PreparedBeams& beams, const ReadingMargins& margins) {
+BeamFits ReadingClassifier::classify_beams(const geometry::Pose2& robot, const PreparedBeams& beams,
+                                          const ReadingMargins& margins) const {
   const geometry::Pose2 sensor = robot.compose(beams.sensor_pose);
   BeamFits fits;
   for (std::size_t b = 0; b < beams.size(); ++b) {
     if (beams.no_return[b] != 0) continue;
     ++fits.returned;
-    switch (classify_reading(map, sensor, robot.yaw + beams.robot_angle[b], beams.ranges[b], margins)) {
+    switch (classify(sensor, robot.yaw + beams.robot_angle[b], beams.ranges[b], margins)) {
       case ReadingFit::short_of_map: ++fits.short_of_map; break;
       case ReadingFit::through_wall: ++fits.through_wall; break;
       case ReadingFit::fits: break;
@@ -42,10 +43,9 @@ BeamFits classify_beams(const grid::OccupancyGrid& map, const geometry::Pose2& r
   return fits;
 }
 
-std::size_t mark_short_readings(const grid::OccupancyGrid& map, const geometry::Pose2& robot,
-                                const LaserScan& scan, const ReadingMargins& margins,
-                                std::size_t most_checked,
-                                std::vector<unsigned char>& out) {
+std::size_t ReadingClassifier::mark_short_readings(const geometry::Pose2& robot, const LaserScan& scan,
+                                                   const ReadingMargins& margins, std::size_t most_checked,
+                                                   std::vector<unsigned char>& out) const {
   const geometry::Pose2 sensor = robot.compose(scan.sensor_pose);
   const std::size_t readings = std::min(scan.ranges.size(), scan.bearings.size());
   out.assign(scan.ranges.size(), 1);
@@ -65,8 +65,8 @@ std::size_t mark_short_readings(const grid::OccupancyGrid& map, const geometry::
     ++next;
     const double range = scan.ranges[i];
     const bool is_short = range < scan.max_range &&
-                          classify_reading(map, sensor, sensor.yaw + scan.bearings[i], range,
-                                           margins) == ReadingFit::short_of_map;
+                          classify(sensor, sensor.yaw + scan.bearings[i], range, margins) ==
+                              ReadingFit::short_of_map;
     out[i] = is_short ? 1 : 0;
     short_count += is_short ? 1 : 0;
   }

@@ -15,6 +15,7 @@
 #include "algorithms/amcl/laser_scan.hpp"
 #include "algorithms/geometry/pose2.hpp"
 #include "algorithms/grid/occupancy_grid.hpp"
+#include "algorithms/grid/square_caster.hpp"
 
 #include <cstddef>
 #include <vector>
@@ -35,31 +36,43 @@ enum class ReadingFit {
   through_wall,  // an occupied cell lies more than through_wall before the end
 };
 
-// How a reading of `range` from `sensor` (world frame) along `angle` (world
-// frame) fits the map. Unknown cells and the map's edge are not known to be
-// free: a ray meeting them first fits.
-ReadingFit classify_reading(const grid::OccupancyGrid& map, const geometry::Pose2& sensor,
-                            double angle, double range, const ReadingMargins& margins);
-
 struct BeamFits {
   std::size_t returned = 0;  // beams with a return
   std::size_t short_of_map = 0;
   std::size_t through_wall = 0;
 };
 
-// The prepared `beams` classified from `robot`: the cheap question, asked
-// first, so a clean scan costs max_beams casts and not one per reading.
-BeamFits classify_beams(const grid::OccupancyGrid& map, const geometry::Pose2& robot,
-                        const PreparedBeams& beams, const ReadingMargins& margins);
+// Classifies readings against one map. Rays skip free space in squares
+// (grid::SquareCaster: a byte a cell, built once), so a long reading costs a
+// few steps rather than one per cell. Keeps a reference to `map`, which
+// must outlive it.
+class ReadingClassifier {
+ public:
+  explicit ReadingClassifier(const grid::OccupancyGrid& map);
 
-// Which readings of `scan`, taken at `robot`, to leave out when preparing
-// beams: at most `most_checked` usable readings, evenly spread, are checked,
-// and every reading that is short of the map or was not checked is marked
-// (bounding the cost on scans of many readings). Reuses `out`'s storage;
-// returns how many checked readings are short.
-std::size_t mark_short_readings(const grid::OccupancyGrid& map, const geometry::Pose2& robot,
-                                const LaserScan& scan, const ReadingMargins& margins,
-                                std::size_t most_checked,
-                                std::vector<unsigned char>& out);
+  // How a reading of `range` from `sensor` (world frame) along `angle`
+  // (world frame) fits the map. Unknown cells and the map's edge are not
+  // known to be free: a ray meeting them first fits.
+  ReadingFit classify(const geometry::Pose2& sensor, double angle, double range,
+                      const ReadingMargins& margins) const;
+
+  // The prepared `beams` classified from `robot`: the cheap question, asked
+  // first, so a clean scan costs max_beams casts and not one per reading.
+  BeamFits classify_beams(const geometry::Pose2& robot, const PreparedBeams& beams,
+                          const ReadingMargins& margins) const;
+
+  // Which readings of `scan`, taken at `robot`, to leave out when preparing
+  // beams: at most `most_checked` usable readings, evenly spread, are
+  // checked, and every reading that is short of the map or was not checked
+  // is marked (bounding the cost on scans of many readings). Reuses `out`'s
+  // storage; returns how many checked readings are short.
+  std::size_t mark_short_readings(const geometry::Pose2& robot, const LaserScan& scan,
+                                  const ReadingMargins& margins, std::size_t most_checked,
+                                  std::vector<unsigned char>& out) const;
+
+ private:
+  const grid::OccupancyGrid& map_;
+  grid::SquareCaster caster_;  // stops at anything not free
+};
 
 }  // namespace playerkit::amcl
