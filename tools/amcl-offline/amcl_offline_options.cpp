@@ -106,6 +106,7 @@ void apply_filter_flags(const LocalizeCommand& command, amcl::AmclParameters& fi
     filter.update_min_angle = thresholds[1] * geometry::kRadiansPerDegree;
   }
   if (command.sigma_hit) filter.sigma_hit = *command.sigma_hit;
+  if (command.every_reading) filter.short_reading_filter = false;
   check_filter(filter);
 }
 

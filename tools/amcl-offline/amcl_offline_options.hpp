@@ -58,6 +58,7 @@ struct LocalizeCommand {
   std::optional<double> odom_noise_scale;         // multiplies the four motion-noise alphas
   std::optional<std::string> update_thresh;       // "D,A_DEG": update after this much motion
   std::optional<double> sigma_hit;                // laser hit noise (m)
+  bool every_reading = false;                     // score readings cut short by what the map lacks too
   std::uint64_t seed = 0;
   std::string format = "csv";
   std::string output = "-";

@@ -57,6 +57,7 @@ TEST(AmclOfflineOptions, FlagsReachTheFilter) {
   command.alpha_fast = 0.1;
   command.update_thresh = "0.5,90";
   command.sigma_hit = 0.1;
+  command.every_reading = true;
   command.odom_noise_scale = 2.0;
   command.seed = 7;
   command.format = "log";
@@ -74,6 +75,8 @@ TEST(AmclOfflineOptions, FlagsReachTheFilter) {
   EXPECT_DOUBLE_EQ(filter.update_min_distance, 0.5);
   EXPECT_DOUBLE_EQ(filter.update_min_angle, std::numbers::pi / 2);
   EXPECT_DOUBLE_EQ(filter.sigma_hit, 0.1);
+  EXPECT_FALSE(filter.short_reading_filter);
+  EXPECT_TRUE(defaults.short_reading_filter);
   EXPECT_DOUBLE_EQ(filter.rotation_noise_from_rotation, 2.0 * defaults.rotation_noise_from_rotation);
   EXPECT_DOUBLE_EQ(filter.strafe_noise_from_translation, 2.0 * defaults.strafe_noise_from_translation);
   EXPECT_EQ(options.localization.seed, 7u);

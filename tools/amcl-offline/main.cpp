@@ -115,6 +115,8 @@ int main(int argc, char** argv) {
   localize_app->add_option("--odom-noise", localize.odom_noise_scale, "scale the motion model's noise (default 1)");
   localize_app->add_option("--update-thresh", localize.update_thresh, "D,A_DEG: update after this motion (default 0.2,30)");
   localize_app->add_option("--sigma-hit", localize.sigma_hit, "laser hit noise in metres (default 0.2)");
+  localize_app->add_flag("--every-reading", localize.every_reading,
+                         "score every reading, also those cut short by what the map lacks (people, doors), as 1.5 did");
   localize_app->add_option("--seed", localize.seed, "random seed")->capture_default_str();
   localize_app->add_option("--format", localize.format, "csv, json (lines) or log (Player localize:0 lines)")->capture_default_str();
   localize_app->add_option("-o,--output", localize.output, "where the rows go (- for stdout)")->capture_default_str();

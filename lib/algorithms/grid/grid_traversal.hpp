@@ -1,9 +1,8 @@
 #pragma once
 // Internal: the cells a segment crosses, in order, after Amanatides & Woo
 // (1987), "A Fast Voxel Traversal Algorithm for Ray Tracing". Shared by
-// ray_cast.cpp, occupancy_grid_builder.cpp, wavefront/clearance_map.cpp
-// (which needs it without an OccupancyGrid) and amcl/short_readings.cpp
-// (which needs where a ray enters each cell); use ray_cast.hpp outside.
+// ray_cast.cpp, occupancy_grid_builder.cpp and wavefront/clearance_map.cpp
+// (which needs it without an OccupancyGrid); use ray_cast.hpp outside.
 
 #include <Eigen/Core>
 

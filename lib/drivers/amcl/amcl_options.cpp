@@ -155,6 +155,7 @@ void read_filter_parameters(const config::Section& section, amcl::AmclParameters
   }
   p.resample_interval = read_count(section, "resample_interval", p.resample_interval, 1);
   p.selective_resampling = section.read_int("selective_resampling", p.selective_resampling ? 1 : 0) != 0;
+  p.short_reading_filter = section.read_int("short_reading_filter", p.short_reading_filter ? 1 : 0) != 0;
 
   try {
     amcl::validate(p);

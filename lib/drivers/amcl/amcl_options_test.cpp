@@ -67,7 +67,8 @@ TEST(AmclOptions, ReadsEveryOptionInConfigUnits) {
       "laser_max_samples 12 laser_range_max 5.5 laser_pose [0.1 0 180] laser_model \"beam\" "
       "init_pose [1 2 90] init_pose_var [0.1 0.2 5] update_thresh [0.5 45] "
       "odom_alpha1 0.3 odom_alpha2 0.01 odom_alpha3 0.2 odom_alpha4 0.02 odom_alpha5 0.05 "
-      "alpha_slow 0 alpha_fast 0 resample_interval 3 selective_resampling 1 seed 7 robot_radius 0.3");
+      "alpha_slow 0 alpha_fast 0 resample_interval 3 selective_resampling 1 short_reading_filter 0 seed 7 "
+      "robot_radius 0.3");
   const amcl::AmclParameters& p = options.parameters;
   EXPECT_EQ(options.position_index, 2);
   EXPECT_EQ(options.laser_index, 3);
@@ -95,6 +96,7 @@ TEST(AmclOptions, ReadsEveryOptionInConfigUnits) {
   EXPECT_DOUBLE_EQ(p.alpha_fast, 0.0);
   EXPECT_EQ(p.resample_interval, 3u);
   EXPECT_TRUE(p.selective_resampling);
+  EXPECT_FALSE(p.short_reading_filter);
   EXPECT_EQ(options.seed, 7u);
 }
 
