@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <fstream>
-#include <iterator>
 #include <system_error>
 #include <string>
 
@@ -21,9 +20,12 @@ std::optional<GreyImage> read_grey_image(const std::filesystem::path& file, std:
   std::error_code error;
   if (!std::filesystem::exists(file, error)) return fail("no such file");
   if (!std::filesystem::is_regular_file(file, error)) return fail("not a regular file");
+  const std::uintmax_t size = std::filesystem::file_size(file, error);
+  if (error) return fail("cannot read it");
   std::ifstream in(file, std::ios::binary);
-  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) return fail("cannot read it");
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
+  in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  if (!in || in.gcount() != static_cast<std::streamsize>(bytes.size())) return fail("cannot read it");
   image::Decoded decoded;
   if (image::is_png(bytes)) {
     decoded = image::decode_png(bytes);
