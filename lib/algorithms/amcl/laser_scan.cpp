@@ -18,8 +18,8 @@ void prepare_beams(const LaserScan& scan, std::size_t max_beams, PreparedBeams& 
   if (left_out != nullptr && left_out->size() != scan.ranges.size()) {
     throw std::invalid_argument("prepare_beams: left_out differs in size from the scan");
   }
-  const auto usable = [&](const LaserScan& s, std::size_t i) {
-    return usable_reading(s, i) && (left_out == nullptr || (*left_out)[i] == 0);
+  const auto usable = [&](std::size_t i) {
+    return usable_reading(scan, i) && (left_out == nullptr || (*left_out)[i] == 0);
   };
   out.max_range = scan.max_range;
   out.sensor_pose = scan.sensor_pose;
@@ -31,22 +31,7 @@ void prepare_beams(const LaserScan& scan, std::size_t max_beams, PreparedBeams& 
   out.end_y.clear();
   out.no_return.clear();
 
-  // Spread the kept beams over the usable readings, so invalid readings do
-  // not eat into the budget.
-  std::size_t usable_count = 0;
-  for (std::size_t i = 0; i < scan.ranges.size(); ++i) usable_count += usable(scan, i) ? 1 : 0;
-  if (usable_count == 0 || max_beams == 0) return;
-  const std::size_t kept = std::min(max_beams, usable_count);
-  const double step =
-      kept > 1 ? static_cast<double>(usable_count - 1) / static_cast<double>(kept - 1) : 0.0;
-
-  std::size_t usable_index = 0;
-  std::size_t next_kept = 0;
-  for (std::size_t i = 0; i < scan.ranges.size() && next_kept < kept; ++i) {
-    if (!usable(scan, i)) continue;
-    const auto wanted = static_cast<std::size_t>(std::lround(static_cast<double>(next_kept) * step));
-    if (usable_index++ != wanted) continue;
-    ++next_kept;
+  const auto keep = [&](std::size_t i) {
     const bool no_return = scan.ranges[i] >= scan.max_range;
     const double range = no_return ? scan.max_range : scan.ranges[i];
     const double angle = scan.sensor_pose.yaw + scan.bearings[i];
@@ -58,7 +43,10 @@ void prepare_beams(const LaserScan& scan, std::size_t max_beams, PreparedBeams& 
     out.end_x.push_back(scan.sensor_pose.x + range * c);
     out.end_y.push_back(scan.sensor_pose.y + range * s);
     out.no_return.push_back(no_return ? 1 : 0);
-  }
+  };
+  // Spread the kept beams over the usable readings, so invalid readings do
+  // not eat into the budget.
+  for_each_spread_reading(scan.ranges.size(), max_beams, usable, keep);
 }
 
 }  // namespace playerkit::amcl

@@ -6,6 +6,8 @@
 
 #include "algorithms/geometry/pose2.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -32,6 +34,27 @@ struct PreparedBeams {
 // A reading the laser models can use: finite bearing, a range that is not
 // NaN and not below min_range (at or above max_range it is a no-return).
 bool usable_reading(const LaserScan& scan, std::size_t index);
+
+// Calls visit(i) for at most `most` of the readings `take(i)` accepts,
+// evenly spread over them (first and last included), in order.
+template <typename Take, typename Visit>
+void for_each_spread_reading(std::size_t readings, std::size_t most, Take&& take, Visit&& visit) {
+  std::size_t taken_count = 0;
+  for (std::size_t i = 0; i < readings; ++i) taken_count += take(i) ? 1 : 0;
+  if (taken_count == 0 || most == 0) return;
+  const std::size_t kept = std::min(most, taken_count);
+  const double step =
+      kept > 1 ? static_cast<double>(taken_count - 1) / static_cast<double>(kept - 1) : 0.0;
+  std::size_t taken_index = 0;
+  std::size_t next = 0;
+  for (std::size_t i = 0; i < readings && next < kept; ++i) {
+    if (!take(i)) continue;
+    const auto wanted = static_cast<std::size_t>(std::lround(static_cast<double>(next) * step));
+    if (taken_index++ != wanted) continue;
+    ++next;
+    visit(i);
+  }
+}
 
 // Keeps at most `max_beams` readings, evenly spread over the scan (first and
 // last included), skipping readings that are not finite or below min_range,

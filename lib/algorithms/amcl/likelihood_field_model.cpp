@@ -1,5 +1,7 @@
 #include "algorithms/amcl/likelihood_field_model.hpp"
 
+#include "algorithms/grid/distance_map.hpp"
+
 #include <cmath>
 #include <numbers>
 #include <stdexcept>

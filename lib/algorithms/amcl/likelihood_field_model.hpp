@@ -13,7 +13,6 @@
 #include "algorithms/amcl/laser_model_settings.hpp"
 #include "algorithms/amcl/laser_scan.hpp"
 #include "algorithms/amcl/particle_set.hpp"
-#include "algorithms/grid/distance_map.hpp"
 #include "algorithms/grid/occupancy_grid.hpp"
 
 #include <array>

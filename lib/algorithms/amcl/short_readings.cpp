@@ -49,27 +49,17 @@ std::size_t ReadingClassifier::mark_short_readings(const geometry::Pose2& robot,
   const geometry::Pose2 sensor = robot.compose(scan.sensor_pose);
   const std::size_t readings = std::min(scan.ranges.size(), scan.bearings.size());
   out.assign(scan.ranges.size(), 1);
-  std::size_t usable = 0;
-  for (std::size_t i = 0; i < readings; ++i) usable += usable_reading(scan, i) ? 1 : 0;
-  if (usable == 0 || most_checked == 0) return 0;
-  const std::size_t checked = std::min(usable, most_checked);
-  const double step =
-      checked > 1 ? static_cast<double>(usable - 1) / static_cast<double>(checked - 1) : 0.0;
   std::size_t short_count = 0;
-  std::size_t usable_index = 0;
-  std::size_t next = 0;
-  for (std::size_t i = 0; i < readings && next < checked; ++i) {
-    if (!usable_reading(scan, i)) continue;
-    const auto wanted = static_cast<std::size_t>(std::lround(static_cast<double>(next) * step));
-    if (usable_index++ != wanted) continue;
-    ++next;
+  const auto usable = [&](std::size_t i) { return usable_reading(scan, i); };
+  const auto check = [&](std::size_t i) {
     const double range = scan.ranges[i];
     const bool is_short = range < scan.max_range &&
                           classify(sensor, sensor.yaw + scan.bearings[i], range, margins) ==
                               ReadingFit::short_of_map;
     out[i] = is_short ? 1 : 0;
     short_count += is_short ? 1 : 0;
-  }
+  };
+  for_each_spread_reading(readings, most_checked, usable, check);
   return short_count;
 }
 
