@@ -19,6 +19,13 @@ struct Decoded {
   bool ok() const { return error.empty(); }
 };
 
+// The width and height a file's header declares, read before decoding so
+// that a caller can refuse an absurd size without taking the memory.
+struct DeclaredSize {
+  std::int64_t width = 0;
+  std::int64_t height = 0;
+};
+
 // Colour to grey as OpenCV's and libpng's grey conversions weigh it
 // (0.299 R + 0.587 G + 0.114 B), in 15-bit fixed point.
 inline std::uint8_t grey_of(unsigned red, unsigned green, unsigned blue) {

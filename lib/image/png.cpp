@@ -145,6 +145,14 @@ bool is_png(std::span<const std::uint8_t> bytes) {
   return bytes.size() >= kSignature.size() && std::equal(kSignature.begin(), kSignature.end(), bytes.begin());
 }
 
+std::optional<DeclaredSize> png_declared_size(std::span<const std::uint8_t> bytes) {
+  // Signature (8), IHDR's length (4) and type (4), then width and height.
+  if (!is_png(bytes) || bytes.size() < 24 || !std::equal(bytes.begin() + 12, bytes.begin() + 16, "IHDR")) {
+    return std::nullopt;
+  }
+  return DeclaredSize{read_u32(&bytes[16]), read_u32(&bytes[20])};
+}
+
 Decoded decode_png(std::span<const std::uint8_t> bytes) {
   if (!is_png(bytes)) return png_failure("not a PNG file (no signature)");
   Header header;

@@ -9,6 +9,7 @@
 #include "image/grey_image.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -16,6 +17,10 @@ namespace playerkit::image {
 
 // True when `bytes` start with the PNG signature.
 bool is_png(std::span<const std::uint8_t> bytes);
+
+// The size in the IHDR chunk: the first 24 bytes suffice. nullopt when
+// they are not a PNG's.
+std::optional<DeclaredSize> png_declared_size(std::span<const std::uint8_t> bytes);
 
 Decoded decode_png(std::span<const std::uint8_t> bytes);
 

@@ -266,5 +266,18 @@ TEST(DecodePng, DamagedFilesGetAnErrorNeverAnImage) {
   EXPECT_NE(decode_png(header_only).error.find("too large"), std::string::npos);
 }
 
+TEST(PngDeclaredSize, ReadsTheHeaderAloneWithoutDecoding) {
+  const cv::Mat grey = picture(CV_8UC1, 61, 37);
+  std::vector<std::uint8_t> bytes = encode_png({grey.data, grey.total()}, grey.cols, grey.rows, 1);
+  bytes.resize(24);  // signature, IHDR's length and type, width and height: nothing more needed
+  const auto size = png_declared_size(bytes);
+  ASSERT_TRUE(size);
+  EXPECT_EQ(size->width, 61);
+  EXPECT_EQ(size->height, 37);
+  bytes.resize(23);
+  EXPECT_FALSE(png_declared_size(bytes));
+  EXPECT_FALSE(png_declared_size(std::vector<std::uint8_t>{'P', '5', ' ', '1', ' ', '1'}));
+}
+
 }  // namespace png_test
 }  // namespace playerkit::image

@@ -66,6 +66,14 @@ bool is_pnm(std::span<const std::uint8_t> bytes) {
   return bytes.size() >= 2 && bytes[0] == 'P' && bytes[1] >= '1' && bytes[1] <= '6';
 }
 
+std::optional<DeclaredSize> pnm_declared_size(std::span<const std::uint8_t> bytes) {
+  if (!is_pnm(bytes)) return std::nullopt;
+  Reader reader(bytes);
+  std::uint32_t width = 0, height = 0;
+  if (!reader.number(width) || !reader.number(height)) return std::nullopt;
+  return DeclaredSize{width, height};
+}
+
 Decoded decode_pnm(std::span<const std::uint8_t> bytes) {
   if (!is_pnm(bytes)) return pnm_failure("not a PBM, PGM or PPM file (no P1-P6)");
   const int kind = bytes[1] - '0';

@@ -72,5 +72,15 @@ TEST(DecodePnm, DamagedFilesGetAnError) {
   EXPECT_FALSE(is_pnm(bytes_of("GIF89a")));
 }
 
+TEST(PnmDeclaredSize, ReadsWidthAndHeightPastComments) {
+  const auto size = pnm_declared_size(bytes_of("P2\n# CREATOR: GIMP\n 12\n34"));
+  ASSERT_TRUE(size);
+  EXPECT_EQ(size->width, 12);
+  EXPECT_EQ(size->height, 34);
+  EXPECT_EQ(pnm_declared_size(bytes_of("P5 100000 100000"))->width, 100000);  // no pixels needed
+  EXPECT_FALSE(pnm_declared_size(bytes_of("P5\nxx")));
+  EXPECT_FALSE(pnm_declared_size(bytes_of("GIF89a")));
+}
+
 }  // namespace pnm_test
 }  // namespace playerkit::image

@@ -15,8 +15,8 @@ struct ImageSize {
 };
 
 // The width and height declared by a PNM (P1-P6: Player's maps) or PNG
-// header; nullopt for other formats or a header that cannot be read (the
-// decoder then reports those).
+// header, as lib/image reads them; nullopt for other formats or a header
+// that cannot be read (the decoder then reports those).
 std::optional<ImageSize> image_size_from_header_bytes(std::string_view header);
 std::optional<ImageSize> image_size_from_header(const std::filesystem::path& file);
 
