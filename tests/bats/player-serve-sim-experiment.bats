@@ -21,6 +21,7 @@ teardown() {
   tools="$build_dir/tools"
   run env PATH="$tools/player-serve:$tools/player-send:$tools/player-cat:$tools/player-log:$tools/amcl-offline:$PATH" \
     OUT="$BATS_TEST_TMPDIR/experiment" "$repo_root/scripts/sim-experiment"
+  echo "$output"  # shown only if the test fails: what the script said
   [ "$status" -eq 0 ]
   [[ "$output" == *"all "* ]]
   cd "$BATS_TEST_TMPDIR/experiment"
