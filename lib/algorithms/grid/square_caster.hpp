@@ -77,11 +77,12 @@ class SquareCaster {
   struct Start {
     bool walks = false;  // false: answered at once, with `range`
     int col = 0, row = 0;
+    int clearance = 0;  // of the cell (col, row)
     double range = 0.0;
   };
   static constexpr int kWalking = 0, kHit = 1, kGone = 2;
   Start start(Walk& walk, const Ray& ray) const;
-  int advance(const Walk& walk, int& col, int& row, double& along) const;
+  int advance(const Walk& walk, int& col, int& row, double& along, int& clearance) const;
 
   // Per cell (row-major): 0 for a stopping cell, else the Chebyshev
   // distance in cells to the nearest one, capped at 255.

@@ -21,34 +21,44 @@ LaserScan scan_laser(const Scene& scene, const LaserSpec& spec, const geometry::
 
   // Every sample draws the same numbers in the same order whatever it
   // meets, so one beam's noise never depends on what another beam hit.
-  thread_local std::vector<double> gaussian, proportional;
+  thread_local std::vector<double> jitters, gaussian, proportional;
   thread_local std::vector<SceneRay> rays;
   thread_local std::vector<RayHit> hits;
-  gaussian.resize(count);
-  proportional.resize(count);
+  jitters.assign(count, 0.0);
+  gaussian.assign(count, 0.0);
+  proportional.assign(count, 0.0);
   rays.resize(count);
   hits.resize(count);
-  const Eigen::Vector2d origin = sensor_pose.translation();
   const double jitter_width = spacing * spec.angle_jitter;
+  if (jitter_width != 0.0 || spec.noise_sd != 0.0 || spec.noise_proportional != 0.0) {
+    for (std::size_t i = 0; i < count; ++i) {
+      if (jitter_width != 0.0) jitters[i] = jitter_width * noise.uniform(-0.5, 0.5);
+      gaussian[i] = noise.gaussian(spec.noise_sd);
+      if (spec.noise_proportional != 0.0) {
+        proportional[i] = noise.uniform(-spec.noise_proportional, spec.noise_proportional);
+      }
+    }
+  }
   // Beam i points at yaw + min_angle + i * spacing: the first direction
   // turned i times by the spacing (no trigonometry per beam; the rounding
-  // this gathers over 361 beams is about 1e-14 rad).
-  const Eigen::Vector2d turn(std::cos(spacing), std::sin(spacing));
-  Eigen::Vector2d direction(std::cos(sensor_pose.yaw + scan.min_angle), std::sin(sensor_pose.yaw + scan.min_angle));
+  // this gathers over 361 beams is about 1e-14 rad). Scalars, not an Eigen
+  // vector: stored as two halves and loaded as one, a vector stalled every
+  // beam on store forwarding.
+  const Eigen::Vector2d origin = sensor_pose.translation();
+  const double turn_cos = std::cos(spacing), turn_sin = std::sin(spacing);
+  double direction_x = std::cos(sensor_pose.yaw + scan.min_angle);
+  double direction_y = std::sin(sensor_pose.yaw + scan.min_angle);
   for (std::size_t i = 0; i < count; ++i) {
-    const double jitter = jitter_width != 0.0 ? jitter_width * noise.uniform(-0.5, 0.5) : 0.0;
-    gaussian[i] = noise.gaussian(spec.noise_sd);
-    proportional[i] =
-        spec.noise_proportional != 0.0 ? noise.uniform(-spec.noise_proportional, spec.noise_proportional) : 0.0;
     rays[i].origin = origin;
-    if (jitter != 0.0) {
-      const double angle = sensor_pose.yaw + scan.min_angle + spacing * static_cast<double>(i) + jitter;
+    if (jitters[i] != 0.0) {
+      const double angle = sensor_pose.yaw + scan.min_angle + spacing * static_cast<double>(i) + jitters[i];
       rays[i].direction = {std::cos(angle), std::sin(angle)};
     } else {
-      rays[i].direction = direction;
+      rays[i].direction = {direction_x, direction_y};
     }
-    direction = {direction.x() * turn.x() - direction.y() * turn.y(),
-                 direction.x() * turn.y() + direction.y() * turn.x()};
+    const double turned_x = direction_x * turn_cos - direction_y * turn_sin;
+    direction_y = direction_x * turn_sin + direction_y * turn_cos;
+    direction_x = turned_x;
   }
   scene.cast_all(rays, spec.range_max, own_root, hits);
 

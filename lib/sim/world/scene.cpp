@@ -122,25 +122,34 @@ void Scene::cast_all(std::span<const SceneRay> rays, double max_range, ModelId i
   thread_local std::vector<std::size_t> walked_ray;  // which of `rays` each walked ray is
   thread_local std::vector<double> offsets;
   thread_local std::vector<double> walls;
-  walked.clear();
-  walked_ray.clear();
-  offsets.clear();
+  walked.resize(rays.size());
+  walked_ray.resize(rays.size());
+  offsets.resize(rays.size());
+  std::size_t count = 0;
+  const bool usable = max_range > 0.0 && !map_.empty();
+  const Eigen::Vector2d low = map_.origin();
+  const Eigen::Vector2d high = low + map_.resolution() * Eigen::Vector2d(map_.width(), map_.height());
   for (std::size_t i = 0; i < rays.size(); ++i) {
     hits[i] = {.range = max_range};
     const SceneRay& ray = rays[i];
-    if (!(max_range > 0.0) || !ray.direction.allFinite() || !ray.origin.allFinite()) continue;
-    if (const WallWalk walk = wall_walk(ray.origin, ray.direction, max_range); walk.on_map) {
-      walked.push_back(walk.ray);
-      walked_ray.push_back(i);
-      offsets.push_back(walk.offset);
-    }
+    if (!usable || !ray.direction.allFinite() || !ray.origin.allFinite()) continue;
+    const bool on_map = ray.origin.x() >= low.x() && ray.origin.y() >= low.y() && ray.origin.x() < high.x() &&
+                        ray.origin.y() < high.y();
+    // A laser's rays start on the map (wall_walk's first case, inline).
+    const WallWalk walk = on_map ? WallWalk{.on_map = true, .ray = {ray.origin, ray.direction, max_range}, .offset = 0.0}
+                                 : wall_walk(ray.origin, ray.direction, max_range);
+    if (!walk.on_map) continue;
+    walked[count] = walk.ray;
+    walked_ray[count] = i;
+    offsets[count] = walk.offset;
+    ++count;
   }
-  walls.resize(walked.size());
-  walls_.ranges(walked, walls);
-  for (std::size_t k = 0; k < walked.size(); ++k) {
+  walls.resize(count);
+  walls_.ranges(std::span(walked).first(count), walls);
+  for (std::size_t k = 0; k < count; ++k) {
     if (walls[k] < walked[k].max_range) hits[walked_ray[k]] = {.range = offsets[k] + walls[k], .model = kNoModel, .wall = true};
   }
-  if (!index_.has_solid_bodies() || !(max_range > 0.0)) return;
+  if (!visible_bodies_beyond(ignore_root) || !(max_range > 0.0)) return;
   if (rays.size() >= kFewestRaysToFile) {
     nearest_bodies(rays, ignore_root, hits);
     return;
@@ -169,14 +178,14 @@ void Scene::nearest_bodies(std::span<const SceneRay> rays, ModelId ignore_root, 
   centre /= static_cast<double>(counted);
   // Every ray ends within `gather` of the centre: at its wall, or at
   // max_range (hits hold the walls' answers so far).
-  double spread = 0.0, gather = 0.0;
+  double spread_squared = 0.0, longest = 0.0;
   for (std::size_t i = 0; i < rays.size(); ++i) {
     const SceneRay& ray = rays[i];
     if (!ray.origin.allFinite() || !ray.direction.allFinite()) continue;
-    const double off_centre = (ray.origin - centre).norm();
-    spread = std::max(spread, off_centre);
-    gather = std::max(gather, off_centre + hits[i].range);
+    spread_squared = std::max(spread_squared, (ray.origin - centre).squaredNorm());
+    longest = std::max(longest, hits[i].range);
   }
+  const double spread = std::sqrt(spread_squared), gather = spread + longest;
 
   // Bodies whose bounding circle comes within reach of some ray.
   thread_local std::vector<ModelId> near;
@@ -298,6 +307,21 @@ void Scene::nearest_body(const Eigen::Vector2d& origin, const Eigen::Vector2d& d
   });
 }
 
+bool Scene::visible_bodies_beyond(ModelId ignore_root) const {
+  const auto root = static_cast<std::size_t>(ignore_root);
+  const int own = ignore_root >= 0 && root < visible_bodies_by_root_.size() ? visible_bodies_by_root_[root] : 0;
+  return visible_bodies_ > own;
+}
+
+void Scene::count_visible(const SceneModel& model, int change) {
+  if (!model.present || !model.body.present || !(model.returns.ranger >= 0.0)) return;
+  visible_bodies_ += change;
+  if (model.root < 0) return;
+  const auto root = static_cast<std::size_t>(model.root);
+  if (root >= visible_bodies_by_root_.size()) visible_bodies_by_root_.resize(root + 1, 0);
+  visible_bodies_by_root_[root] += change;
+}
+
 std::vector<ModelId> Scene::models_near(const Eigen::Vector2d& centre, double radius) const {
   std::vector<ModelId> near;
   models_near(centre, radius, near);
@@ -328,6 +352,7 @@ void Scene::add(SceneModel model) {
   if (slot >= models_.size()) models_.resize(slot + 1);
   model.body_pose = model.pose.compose(model.body.offset);
   models_[slot] = std::move(model);
+  count_visible(models_[slot], +1);
   if (models_[slot].present) index_.put(models_[slot].id, indexed_body(models_[slot]));
 }
 
@@ -340,7 +365,9 @@ void Scene::update(ModelId id, const geometry::Pose2& pose) {
 
 void Scene::set_present(ModelId id, bool present) {
   SceneModel& model = models_.at(static_cast<std::size_t>(id));
+  count_visible(model, -1);
   model.present = present;
+  count_visible(model, +1);
   if (present) {
     index_.put(id, indexed_body(model));
   } else {
@@ -350,7 +377,9 @@ void Scene::set_present(ModelId id, bool present) {
 
 void Scene::set_root(ModelId id, ModelId root) {
   SceneModel& model = models_.at(static_cast<std::size_t>(id));
+  count_visible(model, -1);
   model.root = root;
+  count_visible(model, +1);
   if (model.present) index_.put(id, indexed_body(model));
 }
 

@@ -113,8 +113,18 @@ class Scene {
   void nearest_body(const Eigen::Vector2d& origin, const Eigen::Vector2d& direction, ModelId ignore_root,
                     const ModelFilter& stops, RayHit& hit) const;
 
+  // Whether a ray of `ignore_root`'s tree, stopped by the default rule, may
+  // meet any body at all: a lone robot's laser then skips the broad phase.
+  [[nodiscard]] bool visible_bodies_beyond(ModelId ignore_root) const;
+  // Keeps the counts below as a model appears (+1) or goes (-1).
+  void count_visible(const SceneModel& model, int change);
+
   grid::OccupancyGrid map_;
   grid::SquareCaster walls_;
+  // Bodies a default ray meets (present, solid, ranger return >= 0): in
+  // all, and per top-level tree (indexed by root id).
+  int visible_bodies_ = 0;
+  std::vector<int> visible_bodies_by_root_;
   std::vector<SceneModel> models_;
   BodyIndex index_;  // the broad phase of cast() and models_near()
 };

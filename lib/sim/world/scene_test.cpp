@@ -360,4 +360,36 @@ TEST(Scene, CarriedModelsJoinTheirCarriersTree) {
   EXPECT_EQ(scene.cast({-1.0, 0.0}, 0.0, 5.0, 0).model, kNoModel);
 }
 
+// A laser's fan skips the search for bodies when every body a ray could
+// meet belongs to its own robot: carrying, letting go, consuming and
+// bringing back a model must keep that decision right.
+TEST(Scene, AFanSeesAModelAgainOnceItsCarrierLetsItGo) {
+  Scene scene;
+  scene.add(box_at(0, 0.0, 0.0, 0.4));  // the robot
+  scene.add(box_at(1, 1.0, 0.0, 0.1));  // what it carries
+  SceneModel see_through = box_at(2, 3.0, 0.0, 0.1);
+  see_through.returns.ranger = -1.0;
+  scene.add(see_through);
+  const auto front_hit = [&scene] {
+    std::vector<SceneRay> fan;
+    for (int ray = -20; ray <= 20; ++ray) {  // more than one by one handles
+      const double angle = 0.01 * ray;
+      fan.push_back({{0.0, 0.0}, {std::cos(angle), std::sin(angle)}});
+    }
+    std::vector<RayHit> hits(fan.size());
+    scene.cast_all(fan, 5.0, 0, hits);
+    return hits[20];
+  };
+  EXPECT_EQ(front_hit().model, 1);
+  scene.set_root(1, 0);
+  EXPECT_EQ(front_hit().model, kNoModel);
+  scene.set_root(1, 1);
+  EXPECT_EQ(front_hit().model, 1);
+  EXPECT_NEAR(front_hit().range, 0.95, 1e-9);
+  scene.set_present(1, false);
+  EXPECT_EQ(front_hit().model, kNoModel);
+  scene.set_present(1, true);
+  EXPECT_EQ(front_hit().model, 1);
+}
+
 }  // namespace playerkit::sim::scene_test
