@@ -33,6 +33,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -60,10 +61,16 @@ class SquareCaster {
     Eigen::Vector2d direction = Eigen::Vector2d::UnitX();  // a unit vector
     double max_range = 0.0;
   };
+  // How ranges() walks many rays: `automatic` takes the vector walk (AVX2,
+  // sixteen walks side by side) on a processor that has it, `scalar` the
+  // portable one (four side by side). Their answers are the same bit for bit.
+  enum class Walker { automatic, scalar };
   // range(ray.origin, ray.direction, ray.max_range) for every ray, into
   // `ranges` (as many as rays; throws std::invalid_argument otherwise):
   // the same answers, bit for bit, in less time than one by one.
-  void ranges(std::span<const Ray> rays, std::span<double> ranges) const;
+  void ranges(std::span<const Ray> rays, std::span<double> ranges, Walker walker = Walker::automatic) const;
+  // Whether `automatic` takes the vector walk here.
+  [[nodiscard]] static bool has_vector_walker();
 
   // How far around `point` (in x and in y, metres) no cell stops a ray:
   // (k - 1) cells for the clearance k of its cell; 0 in a stopping cell or
@@ -73,7 +80,19 @@ class SquareCaster {
   [[nodiscard]] RayStop stop() const { return stop_; }
 
  private:
-  struct Walk;
+  // What a ray's steps read, fixed for the ray: cell units from the grid's
+  // corner. The walk's position (cell, where it was entered) lives in the
+  // callers' locals, so that it stays in registers from step to step.
+  struct Walk {
+    double x = 0.0, y = 0.0;    // origin
+    double dx = 0.0, dy = 0.0;  // direction
+    double inverse_x = 0.0, inverse_y = 0.0;
+    double length = 0.0;        // max_range
+    int step_x = 1, step_y = 1;
+    // The ray these were computed for: a laser's rays share their origin and
+    // max_range, and the divisions that give x, y and length are worth keeping.
+    double from_x = std::numeric_limits<double>::quiet_NaN(), from_y = from_x, from_range = from_x;
+  };
   struct Start {
     bool walks = false;  // false: answered at once, with `range`
     int col = 0, row = 0;
@@ -83,9 +102,12 @@ class SquareCaster {
   static constexpr int kWalking = 0, kHit = 1, kGone = 2;
   Start start(Walk& walk, const Ray& ray) const;
   int advance(const Walk& walk, int& col, int& row, double& along, int& clearance) const;
+  void scalar_ranges(std::span<const Ray> rays, std::span<double> ranges) const;
+  void vector_ranges(std::span<const Ray> rays, std::span<double> ranges) const;  // square_caster_avx2.cpp
 
   // Per cell (row-major): 0 for a stopping cell, else the Chebyshev
-  // distance in cells to the nearest one, capped at 255.
+  // distance in cells to the nearest one, capped at 255. Three bytes more
+  // than cells: the vector walk reads four bytes at a cell.
   std::vector<std::uint8_t> clearance_;
   RayStop stop_ = RayStop::occupied_or_unknown;
   int width_ = 0;

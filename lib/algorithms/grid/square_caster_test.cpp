@@ -31,8 +31,9 @@ struct Ray {
 double allowed_error(double max_range) { return 1e-9 * std::max(1.0, max_range); }
 
 // Compares every ray in both stop modes, through both overloads and in one
-// batch; returns how many answers were hits (neither max_range nor 0), so
-// that callers can check the rays exercised what they meant to.
+// batch by each walker (the vector one only where the processor has it);
+// returns how many answers were hits (neither max_range nor 0), so that
+// callers can check the rays exercised what they meant to.
 int expect_same_as_cast_ray(const OccupancyGrid& grid, const std::vector<Ray>& rays, const std::string& what) {
   int hits = 0;
   std::vector<SquareCaster::Ray> batch;
@@ -41,8 +42,9 @@ int expect_same_as_cast_ray(const OccupancyGrid& grid, const std::vector<Ray>& r
   }
   for (const RayStop stop : kBothStops) {
     const SquareCaster caster(grid, stop);
-    std::vector<double> batch_ranges(batch.size());
+    std::vector<double> batch_ranges(batch.size()), scalar_ranges(batch.size());
     caster.ranges(batch, batch_ranges);
+    caster.ranges(batch, scalar_ranges, SquareCaster::Walker::scalar);
     int failures = 0;
     for (std::size_t i = 0; i < rays.size(); ++i) {
       const Ray& ray = rays[i];
@@ -50,12 +52,12 @@ int expect_same_as_cast_ray(const OccupancyGrid& grid, const std::vector<Ray>& r
       const double by_angle = caster.range(ray.origin, ray.angle, ray.max_range);
       const double by_direction = caster.range(ray.origin, batch[i].direction, ray.max_range);
       const bool wrong = std::abs(by_angle - expected) > allowed_error(ray.max_range) || by_direction != by_angle ||
-                         batch_ranges[i] != by_angle;
+                         batch_ranges[i] != by_angle || scalar_ranges[i] != by_angle;
       if (wrong && failures++ < 5) {
         ADD_FAILURE() << what << (stop == RayStop::occupied ? " (occupied)" : " (not free)") << ": origin ("
                       << ray.origin.x() << ", " << ray.origin.y() << ") angle " << ray.angle << " max_range "
                       << ray.max_range << ": cast_ray " << expected << ", caster " << by_angle << " / "
-                      << by_direction << " / batch " << batch_ranges[i];
+                      << by_direction << " / batch " << batch_ranges[i] << " / scalar batch " << scalar_ranges[i];
       }
       hits += expected > 0.0 && expected < ray.max_range;
     }
@@ -214,11 +216,13 @@ TEST(SquareCaster, RaysAlongBordersAndThroughCornersAllEnd) {
   }
   for (const RayStop stop : kBothStops) {
     const SquareCaster caster(grid, stop);
-    std::vector<double> batch(rays.size());
+    std::vector<double> batch(rays.size()), scalar_batch(rays.size());
     caster.ranges(rays, batch);
+    caster.ranges(rays, scalar_batch, SquareCaster::Walker::scalar);
     for (std::size_t i = 0; i < rays.size(); ++i) {
       const double alone = caster.range(rays[i].origin, rays[i].direction, rays[i].max_range);
       EXPECT_EQ(alone, batch[i]) << "ray " << i;
+      EXPECT_EQ(alone, scalar_batch[i]) << "ray " << i;
       // Where it stops, a stopping cell touches the ray: at a corner the
       // walk may pass on the other side of it from cast_ray's, so the cell
       // may not be cast_ray's.
@@ -315,6 +319,18 @@ TEST(SquareCaster, DegenerateInputsAsCastRay) {
   EXPECT_EQ(caster.range({2.0, 2.2}, std::numbers::pi, infinity), infinity);
   EXPECT_EQ(SquareCaster().range({0.0, 0.0}, 0.0, 5.0), 5.0);
   EXPECT_EQ(SquareCaster(OccupancyGrid(), RayStop::occupied).range({0.0, 0.0}, 0.0, 5.0), 5.0);
+}
+
+// Where the processor has it, the batch walks take the vector walker; the
+// machines this project builds on do (x86-64 with AVX2), so that the tests
+// above compare it with the scalar walks.
+TEST(SquareCaster, TheVectorWalkerIsTakenWhereThereIsOne) {
+#if defined(__x86_64__)
+  if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "this processor has no AVX2";
+  EXPECT_TRUE(SquareCaster::has_vector_walker());
+#else
+  EXPECT_FALSE(SquareCaster::has_vector_walker());
+#endif
 }
 
 }  // namespace square_caster_test

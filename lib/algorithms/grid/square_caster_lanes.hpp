@@ -1,0 +1,37 @@
+#pragma once
+// Inside SquareCaster: what square_caster.cpp (which starts every ray of a
+// batch) hands to square_caster_avx2.cpp (which walks them sixteen at a
+// time). Not for other callers.
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#include "algorithms/grid/square_caster.hpp"
+
+namespace playerkit::grid::lanes {
+
+// One ray's walk as a lane holds it: start()'s Walk and first cell, in
+// doubles (cell numbers are whole numbers, exact in a double).
+struct LaneStart {
+  double x, y, dx, dy, inverse_x, inverse_y, length;
+  double step_x, behind_x, step_y, behind_y;  // behind: 1 when the step is -1, else 0
+  double col, row, clearance;
+};
+
+// The map as the lanes read it.
+struct LaneMap {
+  const std::uint8_t* cells;  // row-major clearances, with three readable bytes after the last
+  int width, height;          // width * height < 2^31
+  double resolution;
+};
+
+// Whether this processor runs walk() (AVX2).
+[[nodiscard]] bool available();
+
+// Walks every start to its end and writes ranges[start_ray[i]] for start i,
+// as SquareCaster's scalar walk would. Only where available().
+void walk(const LaneMap& map, std::span<const LaneStart> starts, std::span<const std::size_t> start_ray,
+          std::span<const SquareCaster::Ray> rays, std::span<double> ranges);
+
+}  // namespace playerkit::grid::lanes
