@@ -62,8 +62,9 @@ class SquareCaster {
     double max_range = 0.0;
   };
   // How ranges() walks many rays: `automatic` takes the vector walk (AVX2,
-  // sixteen walks side by side) on a processor that has it, `scalar` the
-  // portable one (four side by side). Their answers are the same bit for bit.
+  // sixteen walks side by side) for 32 rays or more on a processor that has
+  // it, `scalar` the portable one (four side by side). Their answers are
+  // the same bit for bit.
   enum class Walker { automatic, scalar };
   // range(ray.origin, ray.direction, ray.max_range) for every ray, into
   // `ranges` (as many as rays; throws std::invalid_argument otherwise):
