@@ -1,5 +1,6 @@
 #include "algorithms/amcl/likelihood_field_model.hpp"
 
+#include "algorithms/amcl/likelihood_field_lanes.hpp"
 #include "algorithms/grid/distance_map.hpp"
 
 #include <cmath>
@@ -13,7 +14,8 @@ LikelihoodFieldModel::LikelihoodFieldModel(const grid::OccupancyGrid& map, doubl
   const grid::DistanceMap distances(map, max_distance);
   max_distance_ = distances.max_distance();
   const double codes_per_metre = max_distance_ > 0.0 ? (kDistanceCodes - 1) / max_distance_ : 0.0;
-  distance_codes_.resize(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
+  // Three bytes more than cells: the vector scoring reads four at a cell.
+  distance_codes_.resize(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) + 3);
   for (int row = 0; row < height_; ++row) {
     for (int col = 0; col < width_; ++col) {
       const double code = std::min(std::round(distances.at(col, row) * codes_per_metre), kDistanceCodes - 1.0);
@@ -64,33 +66,52 @@ void LikelihoodFieldModel::log_likelihoods(std::span<const Particle> particles,
     hit_y_.push_back(beams.end_y[b]);
   }
   const std::size_t hits = hit_x_.size();
+  // The vector scoring takes beams four at a time: padded with endpoints at
+  // the robot, whose values are never read.
+  const std::size_t padded = (hits + 3) / 4 * 4;
+  hit_x_.resize(padded, 0.0);
+  hit_y_.resize(padded, 0.0);
   const double inverse_resolution = 1.0 / resolution_;
   const double* hx = hit_x_.data();
   const double* hy = hit_y_.data();
   const std::uint8_t* codes = distance_codes_.data();
   const float* log_by_code = log_by_code_.data();
   const float log_outside = log_by_code_[kDistanceCodes - 1];
+  const field_lanes::FieldTable table{codes, log_by_code, log_outside, width_, height_};
+  // 32-bit cell indices in the vector scoring.
+  const bool vector = vector_scoring_ &&
+                      static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) < (std::size_t{1} << 31) &&
+                      field_lanes::available();
 
-  const auto endpoint_value = [&](const geometry::Pose2& pose, auto&& visit) {
+  // values[b] for every beam b of the particle at `pose` (and, with the
+  // vector scoring, the padding after them).
+  const auto endpoint_values = [&](const geometry::Pose2& pose, float* values) {
     const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
     // Cell coordinates of the particle, so each endpoint is one rotation away.
-    const double base_col = (pose.x - origin_.x()) * inverse_resolution;
-    const double base_row = (pose.y - origin_.y()) * inverse_resolution;
-    const double cr = c * inverse_resolution, sr = s * inverse_resolution;
+    const field_lanes::CellPose cell{(pose.x - origin_.x()) * inverse_resolution,
+                                     (pose.y - origin_.y()) * inverse_resolution, c * inverse_resolution,
+                                     s * inverse_resolution};
+    if (vector) {
+      field_lanes::endpoint_values(table, cell, hx, hy, padded, values);
+      return;
+    }
     for (std::size_t b = 0; b < hits; ++b) {
-      const int col = static_cast<int>(std::floor(base_col + cr * hx[b] - sr * hy[b]));
-      const int row = static_cast<int>(std::floor(base_row + sr * hx[b] + cr * hy[b]));
+      const int col = static_cast<int>(std::floor(cell.col + cell.cos_r * hx[b] - cell.sin_r * hy[b]));
+      const int row = static_cast<int>(std::floor(cell.row + cell.sin_r * hx[b] + cell.cos_r * hy[b]));
       const bool inside = col >= 0 && row >= 0 && col < width_ && row < height_;
-      visit(b, inside ? log_by_code[codes[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
-                                          static_cast<std::size_t>(col)]]
-                      : log_outside);
+      values[b] = inside ? log_by_code[codes[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
+                                             static_cast<std::size_t>(col)]]
+                         : log_outside;
     }
   };
 
   if (!settings.beam_skip || hits == 0) {
+    particle_values_.resize(padded);
+    float* values = particle_values_.data();
     for (std::size_t i = 0; i < particles.size(); ++i) {
+      endpoint_values(particles[i].pose, values);
       double sum = 0.0;
-      endpoint_value(particles[i].pose, [&](std::size_t, float value) { sum += value; });
+      for (std::size_t b = 0; b < hits; ++b) sum += values[b];
       out[i] = sum;
     }
     return;
@@ -100,18 +121,16 @@ void LikelihoodFieldModel::log_likelihoods(std::span<const Particle> particles,
   // of the weight explains each beam; then the sums over the beams kept.
   const auto explained = static_cast<float>(
       log_endpoint_likelihood(settings.beam_skip_distance, beams.max_range, settings));
-  beam_values_.resize(particles.size() * hits);
+  beam_values_.resize(particles.size() * padded);
   explained_weight_.assign(hits, 0.0);
   double* explained_weight = explained_weight_.data();
   double total_weight = 0.0;
   for (std::size_t i = 0; i < particles.size(); ++i) {
-    float* values = beam_values_.data() + i * hits;
+    float* values = beam_values_.data() + i * padded;
     const double weight = particles[i].weight;
     total_weight += weight;
-    endpoint_value(particles[i].pose, [&](std::size_t b, float value) {
-      values[b] = value;
-      explained_weight[b] += value >= explained ? weight : 0.0;
-    });
+    endpoint_values(particles[i].pose, values);
+    for (std::size_t b = 0; b < hits; ++b) explained_weight[b] += values[b] >= explained ? weight : 0.0;
   }
   kept_beams_.clear();
   for (std::size_t b = 0; b < hits; ++b) {
@@ -126,7 +145,7 @@ void LikelihoodFieldModel::log_likelihoods(std::span<const Particle> particles,
   const std::size_t* kept = kept_beams_.data();
   const std::size_t kept_count = kept_beams_.size();
   for (std::size_t i = 0; i < particles.size(); ++i) {
-    const float* values = beam_values_.data() + i * hits;
+    const float* values = beam_values_.data() + i * padded;
     double sum = 0.0;
     for (std::size_t k = 0; k < kept_count; ++k) sum += values[kept[k]];
     out[i] = sum;

@@ -34,6 +34,11 @@ class LikelihoodFieldModel {
   void log_likelihoods(std::span<const Particle> particles, const PreparedBeams& beams,
                        const LaserModelSettings& settings, std::span<double> out);
 
+  // Endpoints are scored four at a time on a processor with AVX2, one at a
+  // time otherwise; the values are the same bit for bit. false: one at a
+  // time here too (tests compare the two).
+  void use_vector_scoring(bool use) { vector_scoring_ = use; }
+
   // log p of one endpoint at `distance` from the nearest obstacle.
   static double log_endpoint_likelihood(double distance, double max_range,
                                         const LaserModelSettings& settings);
@@ -48,12 +53,14 @@ class LikelihoodFieldModel {
   double resolution_;
   Eigen::Vector2d origin_;
   double max_distance_;
-  std::vector<std::uint8_t> distance_codes_;  // per cell; kDistanceCodes - 1 is the cap
+  std::vector<std::uint8_t> distance_codes_;  // per cell, and 3 bytes; kDistanceCodes - 1 is the cap
   std::array<float, kDistanceCodes> log_by_code_{};
+  bool vector_scoring_ = true;
   bool table_valid_ = false;
   LaserModelSettings table_settings_;
   double table_max_range_ = 0.0;
   std::vector<double> hit_x_, hit_y_;  // endpoints of beams that returned
+  std::vector<float> particle_values_;  // one particle's, per beam
   std::vector<float> beam_values_;     // beam skipping: per particle, per beam
   std::vector<double> explained_weight_;  // beam skipping: per beam
   std::vector<std::size_t> kept_beams_;   // beam skipping: the beams summed

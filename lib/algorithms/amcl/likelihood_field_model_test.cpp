@@ -1,12 +1,16 @@
 #include "algorithms/amcl/likelihood_field_model.hpp"
 
 #include "algorithms/amcl/laser_model_test_support.hpp"
+#include "algorithms/amcl/likelihood_field_lanes.hpp"
 #include "algorithms/amcl/synthetic_room_test_support.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
+#include <vector>
 
 namespace playerkit::amcl {
 namespace likelihood_field_model_test {
@@ -117,6 +121,48 @@ TEST(LikelihoodFieldModel, SensorOffsetIsApplied) {
   const std::vector<Particle> particles{{robot, 1.0}, {{3.5, 3.0, 0.0}, 1.0}};
   const auto s = scores(model, particles, scan);
   EXPECT_GT(s[0] - s[1], 3.0);
+}
+
+// Scored four endpoints at a time (AVX2, where the processor has it) or
+// one at a time, every particle's score is the same bit for bit: with and
+// without beam skipping, for beam counts that do not fill the last four,
+// and for particles whose endpoints fall off the map.
+TEST(LikelihoodFieldModel, VectorAndScalarScoringAgreeBitForBit) {
+  const auto map = test::make_room();
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> x(-2.0, 12.0), y(-2.0, 8.0), yaw(-std::numbers::pi, std::numbers::pi);
+  std::vector<Particle> particles;
+  for (int i = 0; i < 500; ++i) particles.push_back({{x(random), y(random), yaw(random)}, 1.0 / 500});
+  int off_map = 0;
+  for (const int beams : {1, 7, 30, 61}) {
+    test::LaserSpec spec;
+    spec.beams = static_cast<std::size_t>(beams);
+    LaserScan scan = test::simulate_scan(*map, test::true_pose, spec);
+    if (beams > 1) scan.ranges[1] = scan.max_range;  // a no-return reading
+    PreparedBeams prepared;
+    prepare_beams(scan, static_cast<std::size_t>(beams), prepared);
+    for (const bool beam_skip : {false, true}) {
+      LaserModelSettings settings;
+      settings.beam_skip = beam_skip;
+      LikelihoodFieldModel vector(*map, 2.0), scalar(*map, 2.0);
+      scalar.use_vector_scoring(false);
+      std::vector<double> by_vector(particles.size()), by_scalar(particles.size());
+      vector.log_likelihoods(particles, prepared, settings, by_vector);
+      scalar.log_likelihoods(particles, prepared, settings, by_scalar);
+      for (std::size_t i = 0; i < particles.size(); ++i) {
+        ASSERT_EQ(by_vector[i], by_scalar[i]) << beams << " beams, skip " << beam_skip << ", particle " << i;
+      }
+      const auto hits = std::count(prepared.no_return.begin(), prepared.no_return.end(), false);
+      const double far =
+          static_cast<double>(hits) * LikelihoodFieldModel::log_endpoint_likelihood(2.0, scan.max_range, settings);
+      off_map += static_cast<int>(std::count_if(by_scalar.begin(), by_scalar.end(),
+                                                [far](double score) { return score <= far + 1e-3; }));
+    }
+  }
+  EXPECT_GT(off_map, 10);  // some particles saw only the far value: off the map
+#if defined(__x86_64__)
+  EXPECT_EQ(field_lanes::available(), __builtin_cpu_supports("avx2") != 0);
+#endif
 }
 
 }  // namespace likelihood_field_model_test
