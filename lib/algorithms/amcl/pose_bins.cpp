@@ -26,24 +26,54 @@ PoseBin PoseBinning::bin_of(const geometry::Pose2& pose) const {
           static_cast<std::int32_t>(std::floor(pose.y / cell_size_)), yaw_bin};
 }
 
-std::size_t PoseBinning::neighbours(const PoseBin& bin, std::array<PoseBin, 26>& out) const {
-  // With fewer than three yaw bins, -1 and +1 wrap onto the same bin (or the
-  // bin itself); list each distinct yaw offset once.
-  std::array<int, 3> yaw_offsets{-1, 0, 1};
-  std::size_t yaw_offset_count = 3;
-  if (yaw_bin_count_ == 1) {
-    yaw_offsets = {0, 0, 0};
-    yaw_offset_count = 1;
-  } else if (yaw_bin_count_ == 2) {
-    yaw_offsets = {0, 1, 0};
-    yaw_offset_count = 2;
+namespace {
+
+// The yaw offsets of a bin's neighbours: -1, 0 and +1, except that with
+// fewer than three yaw bins -1 and +1 wrap onto the same bin (or the bin
+// itself), so each distinct offset is listed once.
+std::size_t yaw_offsets(int yaw_bin_count, std::array<int, 3>& offsets) {
+  if (yaw_bin_count == 1) {
+    offsets = {0, 0, 0};
+    return 1;
   }
+  if (yaw_bin_count == 2) {
+    offsets = {0, 1, 0};
+    return 2;
+  }
+  offsets = {-1, 0, 1};
+  return 3;
+}
+
+}  // namespace
+
+std::size_t PoseBinning::neighbours(const PoseBin& bin, std::array<PoseBin, 26>& out) const {
+  std::array<int, 3> offsets{};
+  const std::size_t offset_count = yaw_offsets(yaw_bin_count_, offsets);
   std::size_t count = 0;
   for (int dx = -1; dx <= 1; ++dx) {
     for (int dy = -1; dy <= 1; ++dy) {
-      for (std::size_t k = 0; k < yaw_offset_count; ++k) {
-        const int dyaw = yaw_offsets[k];
+      for (std::size_t k = 0; k < offset_count; ++k) {
+        const int dyaw = offsets[k];
         if (dx == 0 && dy == 0 && dyaw == 0) continue;
+        const int yaw = ((bin.yaw + dyaw) % yaw_bin_count_ + yaw_bin_count_) % yaw_bin_count_;
+        out[count++] = {bin.x + dx, bin.y + dy, yaw};
+      }
+    }
+  }
+  return count;
+}
+
+std::size_t PoseBinning::forward_neighbours(const PoseBin& bin, std::array<PoseBin, 13>& out) const {
+  std::array<int, 3> offsets{};
+  const std::size_t offset_count = yaw_offsets(yaw_bin_count_, offsets);
+  std::size_t count = 0;
+  for (int dx = 0; dx <= 1; ++dx) {
+    for (int dy = dx == 0 ? 0 : -1; dy <= 1; ++dy) {
+      for (std::size_t k = 0; k < offset_count; ++k) {
+        const int dyaw = offsets[k];
+        // With (dx, dy) = (0, 0), only forward in yaw; with two yaw bins
+        // the offset 1 is its own opposite and counts as forward.
+        if (dx == 0 && dy == 0 && dyaw <= 0) continue;
         const int yaw = ((bin.yaw + dyaw) % yaw_bin_count_ + yaw_bin_count_) % yaw_bin_count_;
         out[count++] = {bin.x + dx, bin.y + dy, yaw};
       }

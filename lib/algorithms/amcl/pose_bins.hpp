@@ -30,6 +30,10 @@ class PoseBinning {
   // The 26 bins around `bin` (fewer if the yaw circle has under 3 bins),
   // yaw wrapping around the circle; written into `out`, count returned.
   std::size_t neighbours(const PoseBin& bin, std::array<PoseBin, 26>& out) const;
+  // Half of them: of each two opposite offsets, the one that goes forward
+  // (in x, else in y, else in yaw). Every touching pair of bins is then one
+  // bin's forward neighbour, so finding touching bins needs only these.
+  std::size_t forward_neighbours(const PoseBin& bin, std::array<PoseBin, 13>& out) const;
 
   static std::uint64_t key(const PoseBin& bin);
 

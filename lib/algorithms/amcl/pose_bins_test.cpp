@@ -36,6 +36,56 @@ TEST(PoseBinning, NeighboursWrapAroundTheCircle) {
   EXPECT_EQ(two_bins.neighbours({0, 0, 0}, around), 17u);  // 9 x 2 - itself
 }
 
+// Each touching pair of bins is one bin's forward neighbour: over a block
+// of bins, the forward offsets seen from both ends give exactly the
+// neighbour pairs, for every number of yaw bins (1 and 2 wrap onto
+// themselves).
+TEST(PoseBinning, ForwardNeighboursFindEveryTouchingPairOnce) {
+  for (const double angle : {pi / 18, 2 * pi / 3, pi, 2 * pi}) {
+    const PoseBinning binning(1.0, angle);
+    const int yaw_bins = binning.yaw_bin_count();
+    using Bin = std::tuple<int, int, int>;
+    std::set<std::pair<Bin, Bin>> touching, found;
+    std::size_t expected_forward = 0;
+    for (int x = 0; x < 3; ++x) {
+      for (int y = 0; y < 3; ++y) {
+        for (int yaw = 0; yaw < yaw_bins; ++yaw) {
+          const Bin from{x, y, yaw};
+          std::array<PoseBin, 26> all;
+          const std::size_t count = binning.neighbours({x, y, yaw}, all);
+          for (std::size_t k = 0; k < count; ++k) {
+            const Bin to{all[k].x, all[k].y, all[k].yaw};
+            touching.insert({std::min(from, to), std::max(from, to)});
+          }
+          std::array<PoseBin, 13> forward;
+          const std::size_t forward_count = binning.forward_neighbours({x, y, yaw}, forward);
+          expected_forward = count == 26 ? 13 : (count == 17 ? 9 : 4);
+          EXPECT_EQ(forward_count, expected_forward) << yaw_bins << " yaw bins";
+          for (std::size_t k = 0; k < forward_count; ++k) {
+            const Bin to{forward[k].x, forward[k].y, forward[k].yaw};
+            const bool inserted = found.insert({std::min(from, to), std::max(from, to)}).second;
+            EXPECT_TRUE(inserted || yaw_bins <= 2) << "a pair found twice, " << yaw_bins << " yaw bins";
+          }
+        }
+      }
+    }
+    // Pairs reaching outside the block are found from inside only when
+    // they point forward; compare within the block.
+    const auto inside = [](const Bin& bin) {
+      return std::get<0>(bin) >= 0 && std::get<0>(bin) < 3 && std::get<1>(bin) >= 0 && std::get<1>(bin) < 3;
+    };
+    std::set<std::pair<Bin, Bin>> touching_inside, found_inside;
+    for (const auto& pair : touching) {
+      if (inside(pair.first) && inside(pair.second)) touching_inside.insert(pair);
+    }
+    for (const auto& pair : found) {
+      if (inside(pair.first) && inside(pair.second)) found_inside.insert(pair);
+    }
+    EXPECT_EQ(found_inside, touching_inside) << yaw_bins << " yaw bins";
+    EXPECT_GE(touching_inside.size(), 20u);  // 3 x 3 cells, one yaw bin: 12 sides and 8 corners
+  }
+}
+
 TEST(BinTable, AssignsDenseIndicesInInsertionOrderAndGrows) {
   BinTable table(4);
   for (std::uint64_t k = 0; k < 1000; ++k) {
