@@ -78,9 +78,27 @@ void PoseClusterer::cluster(std::span<const Particle> particles, double cell_siz
       accumulators_.emplace_back();
     }
   }
+  // Sums per cluster in particle order. Runs of particles share a cluster
+  // (most belong to one): a run's sums stay in a local until the cluster
+  // changes, where sums kept in the vector made each particle wait for the
+  // last one's store. The additions are the same, in the same order.
+  std::uint32_t current = BinTable::not_found;
+  Accumulator run;
+  const auto run_of = [&](std::uint32_t k) -> Accumulator& {
+    if (k != current) {
+      if (current != BinTable::not_found) accumulators_[current] = run;
+      current = k;
+      run = accumulators_[k];
+    }
+    return run;
+  };
+  const auto end_run = [&] {
+    if (current != BinTable::not_found) accumulators_[current] = run;
+    current = BinTable::not_found;
+  };
   double total = 0.0;
   for (std::size_t i = 0; i < particles.size(); ++i) {
-    Accumulator& a = accumulators_[cluster_of_root_[find_root(particle_bin_[i])]];
+    Accumulator& a = run_of(cluster_of_root_[find_root(particle_bin_[i])]);
     const Particle& p = particles[i];
     a.weight += p.weight;
     a.x += p.weight * p.pose.x;
@@ -89,6 +107,7 @@ void PoseClusterer::cluster(std::span<const Particle> particles, double cell_siz
     a.sin_yaw += p.weight * std::sin(p.pose.yaw);
     total += p.weight;
   }
+  end_run();
   out.resize(accumulators_.size());
   for (std::size_t k = 0; k < accumulators_.size(); ++k) {
     const Accumulator& a = accumulators_[k];
@@ -107,8 +126,9 @@ void PoseClusterer::cluster(std::span<const Particle> particles, double cell_siz
     const Hypothesis& h = out[k];
     const Eigen::Vector3d d(p.pose.x - h.mean.x, p.pose.y - h.mean.y,
                             geometry::angle_difference(p.pose.yaw, h.mean.yaw));
-    accumulators_[k].scatter += p.weight * d * d.transpose();
+    run_of(k).scatter += p.weight * d * d.transpose();
   }
+  end_run();
   for (std::size_t k = 0; k < out.size(); ++k) {
     if (accumulators_[k].weight > 0.0) {
       out[k].covariance = accumulators_[k].scatter / accumulators_[k].weight;
