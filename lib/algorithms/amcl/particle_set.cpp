@@ -99,8 +99,7 @@ void AdaptiveResampler::resample(std::vector<Particle>& particles,
   const bool may_inject =
       settings.injection_probability > 0.0 && free_space != nullptr && !free_space->empty();
   const PoseBinning binning(settings.bin_cell_size, settings.bin_angle_size);
-  bins_.reserve(max_count);
-  bins_.clear();
+  bins_.reset(max_count);
   next_.resize(max_count);
 
   // Only copies count towards the KLD bound: it measures how complex the

@@ -93,18 +93,39 @@ std::uint64_t PoseBinning::key(const PoseBin& bin) {
 
 BinTable::BinTable(std::size_t max_bins) { reserve(max_bins); }
 
+namespace {
+
+// Keep the load factor at or under one half so probes stay short.
+std::size_t capacity_for(std::size_t max_bins) { return std::bit_ceil(std::max<std::size_t>(16, 2 * max_bins)); }
+
+}  // namespace
+
 void BinTable::reserve(std::size_t max_bins) {
-  // Keep the load factor at or under one half so probes stay short.
-  const std::size_t capacity = std::bit_ceil(std::max<std::size_t>(16, 2 * max_bins));
+  const std::size_t capacity = capacity_for(max_bins);
   if (capacity <= keys_.size()) return;
   keys_.assign(capacity, 0);
   indices_.assign(capacity, not_found);
+  used_.clear();
   mask_ = capacity - 1;
   size_ = 0;
 }
 
+void BinTable::reset(std::size_t max_bins) {
+  const std::size_t capacity = capacity_for(max_bins);
+  if (keys_.size() > 4 * capacity) {  // shrink: start afresh
+    keys_.clear();
+    indices_.clear();
+    used_.clear();
+    size_ = 0;
+  } else {
+    clear();
+  }
+  reserve(max_bins);
+}
+
 void BinTable::clear() {
-  std::fill(indices_.begin(), indices_.end(), not_found);
+  for (const std::uint32_t slot : used_) indices_[slot] = not_found;
+  used_.clear();
   size_ = 0;
 }
 
@@ -131,6 +152,7 @@ std::pair<std::uint32_t, bool> BinTable::insert(std::uint64_t key) {
       const std::size_t slot = slot_of(old_keys[i]);
       keys_[slot] = old_keys[i];
       indices_[slot] = old_indices[i];
+      used_.push_back(static_cast<std::uint32_t>(slot));
     }
     size_ = old_size;
   }
@@ -138,6 +160,7 @@ std::pair<std::uint32_t, bool> BinTable::insert(std::uint64_t key) {
   if (indices_[slot] != not_found) return {indices_[slot], false};
   keys_[slot] = key;
   indices_[slot] = static_cast<std::uint32_t>(size_++);
+  used_.push_back(static_cast<std::uint32_t>(slot));
   return {indices_[slot], true};
 }
 

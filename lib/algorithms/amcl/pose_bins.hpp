@@ -50,6 +50,11 @@ class BinTable {
   // Room for `max_bins` distinct bins without growing.
   explicit BinTable(std::size_t max_bins = 0);
   void reserve(std::size_t max_bins);
+  // Empties the table (in time proportional to the bins it held) and sizes
+  // it for `max_bins`: it grows, or shrinks when four times too big, so
+  // that a table once sized for a global search's particles does not stay
+  // large (and its lookups spread out) while tracking.
+  void reset(std::size_t max_bins);
   void clear();
 
   // Dense index of the bin (0, 1, 2, ... in first-insertion order) and whether
@@ -63,6 +68,7 @@ class BinTable {
 
   std::vector<std::uint64_t> keys_;
   std::vector<std::uint32_t> indices_;  // not_found marks an empty slot
+  std::vector<std::uint32_t> used_;     // the slots holding a bin
   std::size_t mask_ = 0;
   std::size_t size_ = 0;
 };

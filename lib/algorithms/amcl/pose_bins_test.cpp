@@ -100,7 +100,29 @@ TEST(BinTable, AssignsDenseIndicesInInsertionOrderAndGrows) {
   EXPECT_EQ(table.find(3), BinTable::not_found);
   table.clear();
   EXPECT_EQ(table.size(), 0u);
-  EXPECT_EQ(table.find(7919 * 5), BinTable::not_found);
+  for (std::uint64_t k = 0; k < 1000; ++k) ASSERT_EQ(table.find(k * 7919), BinTable::not_found) << k;
+  EXPECT_EQ(table.insert(42).first, 0u);
+}
+
+// reset() empties the table whatever it was sized for before: a global
+// search's hundred thousand bins, then a tracking filter's few hundred.
+TEST(BinTable, ResetEmptiesAndResizesForTheNextUse) {
+  BinTable table;
+  table.reset(100000);
+  for (std::uint64_t k = 0; k < 50000; ++k) ASSERT_TRUE(table.insert(k * 31).second);
+  table.reset(100);  // shrinks
+  EXPECT_EQ(table.size(), 0u);
+  for (std::uint64_t k = 0; k < 50000; k += 7) ASSERT_EQ(table.find(k * 31), BinTable::not_found) << k;
+  for (std::uint64_t k = 0; k < 300; ++k) {  // more than reset for: grows again
+    const auto [index, is_new] = table.insert(k * 31 + 1);
+    ASSERT_TRUE(is_new);
+    ASSERT_EQ(index, k);
+  }
+  table.reset(100);  // keeps its size, empties the slots it used
+  EXPECT_EQ(table.size(), 0u);
+  for (std::uint64_t k = 0; k < 300; ++k) ASSERT_EQ(table.find(k * 31 + 1), BinTable::not_found) << k;
+  EXPECT_EQ(table.insert(5).first, 0u);
+  EXPECT_EQ(table.find(5), 0u);
 }
 
 TEST(PoseBinning, KeysOfDistinctNearbyBinsDiffer) {

@@ -40,8 +40,7 @@ void PoseClusterer::cluster(std::span<const Particle> particles, double cell_siz
   out.clear();
   if (particles.empty()) return;
   const PoseBinning binning(cell_size, angle_size);
-  bins_.reserve(particles.size());
-  bins_.clear();
+  bins_.reset(particles.size());
   bin_coordinates_.clear();
   particle_bin_.resize(particles.size());
   for (std::size_t i = 0; i < particles.size(); ++i) {
