@@ -108,8 +108,11 @@ SquareCaster::Start SquareCaster::start(Walk& walk, const Ray& ray) const {
   walk.dy = dy;
   walk.step_x = dx < 0.0 && moves_x ? -1 : 1;
   walk.step_y = dy < 0.0 && moves_y ? -1 : 1;
-  walk.inverse_x = moves_x ? 1.0 / dx : kNeverInverse;
-  walk.inverse_y = moves_y ? 1.0 / dy : kNeverInverse;
+  // Both reciprocals in one packed division (SSE2): two divisions a ray
+  // were a quarter of starting a laser's rays.
+  const Eigen::Array2d inverse = 1.0 / ray.direction.array();
+  walk.inverse_x = moves_x ? inverse.x() : kNeverInverse;
+  walk.inverse_y = moves_y ? inverse.y() : kNeverInverse;
   if (!(ray.max_range == walk.from_range)) {
     walk.length = ray.max_range / resolution_;
     walk.from_range = ray.max_range;
