@@ -35,7 +35,7 @@ namespace {
 constexpr int kLanesPerGroup = 4;
 constexpr int kGroups = 4;
 constexpr double kVectorFloorShift = 512.0;  // as kFloorShift in square_caster.cpp
-constexpr double kVectorNeverInverse = 1e300;
+constexpr double kVectorNeverInverse = 1e300;       // as kNeverInverse there
 
 // A lane with no ray: every step ends at once (length 0) in cell (0, 0).
 constexpr LaneStart kIdleLane{0.5, 0.5, 1.0, 0.0, 1.0, kVectorNeverInverse, 0.0,
