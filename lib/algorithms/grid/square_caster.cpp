@@ -84,41 +84,57 @@ SquareCaster::SquareCaster(const OccupancyGrid& grid, RayStop stop)
 SquareCaster::Start SquareCaster::start(Walk& walk, const Ray& ray) const {
   Start begun{.walks = false, .col = 0, .row = 0, .range = ray.max_range};
   if (width_ == 0 || !(ray.max_range > 0.0)) return begun;
-  const double dx = ray.direction.x(), dy = ray.direction.y();
-  if (!std::isfinite(dx) || !std::isfinite(dy)) return begun;
-  // Cell units, computed as cast_ray computes them.
-  if (!(ray.origin.x() == walk.from_x && ray.origin.y() == walk.from_y)) {
-    walk.x = (ray.origin.x() - origin_.x()) / resolution_;
-    walk.y = (ray.origin.y() - origin_.y()) / resolution_;
-    walk.from_x = ray.origin.x();
-    walk.from_y = ray.origin.y();
-  }
-  if (!(walk.x >= 0.0 && walk.y >= 0.0 && walk.x < width_ && walk.y < height_)) return begun;
-  begun.col = static_cast<int>(walk.x);
-  begun.row = static_cast<int>(walk.y);
-  begun.clearance = clearance_[static_cast<std::size_t>(begun.row) * static_cast<std::size_t>(width_) +
-                               static_cast<std::size_t>(begun.col)];
+  if (!std::isfinite(ray.direction.x()) || !std::isfinite(ray.direction.y())) return begun;
+  const Start from = start_origin(walk, ray.origin, ray.max_range);
+  if (!from.walks) return begun;
+  begun.col = from.col;
+  begun.row = from.row;
+  begun.clearance = from.clearance;
   if (begun.clearance == 0) {  // in a stopping cell
     begun.range = 0.0;
     return begun;
   }
+  // No direction: the first cell is all it crosses.
+  begun.walks = start_direction(walk, ray.direction);
+  return begun;
+}
+
+SquareCaster::Start SquareCaster::start_origin(Walk& walk, const Eigen::Vector2d& origin, double max_range) const {
+  // Cell units, computed as cast_ray computes them.
+  if (!(origin.x() == walk.from_x && origin.y() == walk.from_y)) {
+    walk.x = (origin.x() - origin_.x()) / resolution_;
+    walk.y = (origin.y() - origin_.y()) / resolution_;
+    walk.from_x = origin.x();
+    walk.from_y = origin.y();
+  }
+  if (!(max_range == walk.from_range)) {
+    walk.length = max_range / resolution_;
+    walk.from_range = max_range;
+  }
+  Start from{.walks = false, .col = 0, .row = 0, .range = max_range};
+  if (!(walk.x >= 0.0 && walk.y >= 0.0 && walk.x < width_ && walk.y < height_)) return from;
+  from.walks = true;
+  from.col = static_cast<int>(walk.x);
+  from.row = static_cast<int>(walk.y);
+  from.clearance = clearance_[static_cast<std::size_t>(from.row) * static_cast<std::size_t>(width_) +
+                              static_cast<std::size_t>(from.col)];
+  return from;
+}
+
+bool SquareCaster::start_direction(Walk& walk, const Eigen::Vector2d& direction) const {
+  const double dx = direction.x(), dy = direction.y();
   const bool moves_x = std::abs(dx) > kNoComponent, moves_y = std::abs(dy) > kNoComponent;
-  if (!moves_x && !moves_y) return begun;  // no direction: the first cell is all it crosses
+  if (!moves_x && !moves_y) return false;
   walk.dx = dx;
   walk.dy = dy;
   walk.step_x = dx < 0.0 && moves_x ? -1 : 1;
   walk.step_y = dy < 0.0 && moves_y ? -1 : 1;
   // Both reciprocals in one packed division (SSE2): two divisions a ray
   // were a quarter of starting a laser's rays.
-  const Eigen::Array2d inverse = 1.0 / ray.direction.array();
+  const Eigen::Array2d inverse = 1.0 / direction.array();
   walk.inverse_x = moves_x ? inverse.x() : kNeverInverse;
   walk.inverse_y = moves_y ? inverse.y() : kNeverInverse;
-  if (!(ray.max_range == walk.from_range)) {
-    walk.length = ray.max_range / resolution_;
-    walk.from_range = ray.max_range;
-  }
-  begun.walks = true;
-  return begun;
+  return true;
 }
 
 // One step, written without branches on the map (arithmetic and selects,
@@ -208,11 +224,7 @@ void SquareCaster::ranges(std::span<const Ray> rays, std::span<double> ranges, W
     throw std::invalid_argument("SquareCaster::ranges: " + std::to_string(rays.size()) + " rays but room for " +
                                 std::to_string(ranges.size()) + " ranges");
   }
-  // The vector walk finds cells by an index in 32 bits, and pays for its
-  // sixteen lanes only with enough rays to keep them busy (a sonar ring of
-  // 12 ran a fifth slower on it, 1000 rings in the hospital world).
-  const bool indexable = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) < (std::size_t{1} << 31);
-  if (walker == Walker::automatic && indexable && rays.size() >= kFewestRaysForVectors && has_vector_walker()) {
+  if (takes_vector_walk(rays.size(), walker)) {
     vector_ranges(rays, ranges);
   } else {
     scalar_ranges(rays, ranges);
@@ -221,31 +233,108 @@ void SquareCaster::ranges(std::span<const Ray> rays, std::span<double> ranges, W
 
 bool SquareCaster::has_vector_walker() { return lanes::available(); }
 
+bool SquareCaster::takes_vector_walk(std::size_t rays, Walker walker) const {
+  // The vector walk finds cells by an index in 32 bits, and pays for its
+  // sixteen lanes only with enough rays to keep them busy (a sonar ring of
+  // 12 ran a fifth slower on it, 1000 rings in the hospital world).
+  const bool indexable = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) < (std::size_t{1} << 31);
+  return walker == Walker::automatic && indexable && rays >= kFewestRaysForVectors && has_vector_walker();
+}
+
+lanes::LaneStart SquareCaster::lane_start(const Walk& walk, const Start& begun, double max_range) {
+  return {walk.x,
+          walk.y,
+          walk.dx,
+          walk.dy,
+          walk.inverse_x,
+          walk.inverse_y,
+          walk.length,
+          static_cast<double>(walk.step_x),
+          walk.step_x < 0 ? 1.0 : 0.0,
+          static_cast<double>(walk.step_y),
+          walk.step_y < 0 ? 1.0 : 0.0,
+          static_cast<double>(begun.col),
+          static_cast<double>(begun.row),
+          static_cast<double>(begun.clearance),
+          max_range};
+}
+
+namespace {
+
+// The vector walk's starts, reused from call to call: no allocation once
+// grown, one set a thread.
+struct LaneStarts {
+  std::vector<lanes::LaneStart> starts;
+  std::vector<std::size_t> ray;  // which ray each start is
+  std::size_t count = 0;
+
+  void prepare(std::size_t rays) {
+    starts.resize(rays);
+    ray.resize(rays);
+    count = 0;
+  }
+  void add(const lanes::LaneStart& start, std::size_t index) {
+    starts[count] = start;
+    ray[count] = index;
+    ++count;
+  }
+};
+
+thread_local LaneStarts lane_starts;
+
+}  // namespace
+
 void SquareCaster::vector_ranges(std::span<const Ray> rays, std::span<double> ranges) const {
   // Every ray's start first, in a loop of its own; rays answered without a
   // walk are answered here.
-  thread_local std::vector<lanes::LaneStart> starts;  // reused: no allocation once grown
-  thread_local std::vector<std::size_t> start_ray;
-  starts.resize(rays.size());
-  start_ray.resize(rays.size());
-  std::size_t count = 0;
+  lane_starts.prepare(rays.size());
   Walk walk;
   for (std::size_t i = 0; i < rays.size(); ++i) {
     const Start begun = start(walk, rays[i]);
-    if (!begun.walks) {
+    if (begun.walks) {
+      lane_starts.add(lane_start(walk, begun, rays[i].max_range), i);
+    } else {
       ranges[i] = begun.range;
-      continue;
     }
-    starts[count] = {walk.x, walk.y, walk.dx, walk.dy, walk.inverse_x, walk.inverse_y, walk.length,
-                     static_cast<double>(walk.step_x), walk.step_x < 0 ? 1.0 : 0.0,
-                     static_cast<double>(walk.step_y), walk.step_y < 0 ? 1.0 : 0.0,
-                     static_cast<double>(begun.col), static_cast<double>(begun.row),
-                     static_cast<double>(begun.clearance)};
-    start_ray[count] = i;
-    ++count;
   }
-  lanes::walk({clearance_.data(), width_, height_, resolution_}, std::span(starts).first(count),
-              std::span(start_ray).first(count), rays, ranges);
+  lanes::walk({clearance_.data(), width_, height_, resolution_},
+              std::span(lane_starts.starts).first(lane_starts.count),
+              std::span(lane_starts.ray).first(lane_starts.count), ranges);
+}
+
+void SquareCaster::fan_ranges(const Eigen::Vector2d& origin, std::span<const Eigen::Vector2d> directions,
+                              double max_range, std::span<double> ranges, Walker walker) const {
+  if (directions.size() != ranges.size()) {
+    throw std::invalid_argument("SquareCaster::fan_ranges: " + std::to_string(directions.size()) +
+                                " directions but room for " + std::to_string(ranges.size()) + " ranges");
+  }
+  if (!takes_vector_walk(directions.size(), walker) || width_ == 0 || !(max_range > 0.0)) {
+    thread_local std::vector<Ray> rays;
+    rays.clear();
+    for (const Eigen::Vector2d& direction : directions) rays.push_back({origin, direction, max_range});
+    this->ranges(rays, ranges, walker);
+    return;
+  }
+  // start() for each ray, its origin's part done once: the same outcomes in
+  // the same order of precedence.
+  lane_starts.prepare(directions.size());
+  Walk walk;
+  const Start from = start_origin(walk, origin, max_range);
+  for (std::size_t i = 0; i < directions.size(); ++i) {
+    const Eigen::Vector2d& direction = directions[i];
+    if (!std::isfinite(direction.x()) || !std::isfinite(direction.y()) || !from.walks) {
+      ranges[i] = max_range;
+    } else if (from.clearance == 0) {
+      ranges[i] = 0.0;
+    } else if (!start_direction(walk, direction)) {
+      ranges[i] = max_range;
+    } else {
+      lane_starts.add(lane_start(walk, from, max_range), i);
+    }
+  }
+  lanes::walk({clearance_.data(), width_, height_, resolution_},
+              std::span(lane_starts.starts).first(lane_starts.count),
+              std::span(lane_starts.ray).first(lane_starts.count), ranges);
 }
 
 void SquareCaster::scalar_ranges(std::span<const Ray> rays, std::span<double> ranges) const {

@@ -40,6 +40,10 @@
 
 namespace playerkit::grid {
 
+namespace lanes {
+struct LaneStart;  // square_caster_lanes.hpp
+}
+
 class SquareCaster {
  public:
   SquareCaster() = default;
@@ -73,6 +77,11 @@ class SquareCaster {
   void ranges(std::span<const Ray> rays, std::span<double> ranges, Walker walker = Walker::automatic) const;
   // Whether this processor has the vector walk (AVX2).
   [[nodiscard]] static bool has_vector_walker();
+  // ranges() for a fan: rays from one origin with one max_range (a laser's
+  // scan), given by their unit directions. The same answers bit for bit;
+  // the origin's part of starting each walk is done once.
+  void fan_ranges(const Eigen::Vector2d& origin, std::span<const Eigen::Vector2d> directions, double max_range,
+                  std::span<double> ranges, Walker walker = Walker::automatic) const;
 
   // How far around `point` (in x and in y, metres) no cell stops a ray:
   // (k - 1) cells for the clearance k of its cell; 0 in a stopping cell or
@@ -103,9 +112,16 @@ class SquareCaster {
   };
   static constexpr int kWalking = 0, kHit = 1, kGone = 2;
   Start start(Walk& walk, const Ray& ray) const;
+  // start() in its two parts: the origin's and max_range's (`walks` false
+  // when the origin is off the grid), then the direction's (false: it has
+  // none). A fan does the first once.
+  Start start_origin(Walk& walk, const Eigen::Vector2d& origin, double max_range) const;
+  bool start_direction(Walk& walk, const Eigen::Vector2d& direction) const;
   int advance(const Walk& walk, int& col, int& row, double& along, int& clearance) const;
+  [[nodiscard]] bool takes_vector_walk(std::size_t rays, Walker walker) const;
+  static lanes::LaneStart lane_start(const Walk& walk, const Start& begun, double max_range);
   void scalar_ranges(std::span<const Ray> rays, std::span<double> ranges) const;
-  void vector_ranges(std::span<const Ray> rays, std::span<double> ranges) const;  // square_caster_avx2.cpp
+  void vector_ranges(std::span<const Ray> rays, std::span<double> ranges) const;
 
   // Per cell (row-major): 0 for a stopping cell, else the Chebyshev
   // distance in cells to the nearest one, capped at 255. Three bytes more

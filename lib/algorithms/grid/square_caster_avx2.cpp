@@ -39,7 +39,7 @@ constexpr double kVectorNeverInverse = 1e300;       // as kNeverInverse there
 
 // A lane with no ray: every step ends at once (length 0) in cell (0, 0).
 constexpr LaneStart kIdleLane{0.5, 0.5, 1.0, 0.0, 1.0, kVectorNeverInverse, 0.0,
-                              1.0, 0.0,  1.0, 0.0, 0.0, 0.0, 1.0};
+                              1.0, 0.0,  1.0, 0.0, 0.0, 0.0, 1.0, 0.0};
 
 struct Group {
   __m256d x, y, dx, dy, inverse_x, inverse_y, length;
@@ -132,18 +132,17 @@ struct StepEnds {
 // Walks the started rays sixteen at a time; a lane whose walk ends takes
 // the next start. Answers as SquareCaster::scalar_ranges' finish().
 [[gnu::target("avx2")]] void walk_all(const LaneMap& map, std::span<const LaneStart> starts,
-                                      std::span<const std::size_t> start_ray, std::span<const SquareCaster::Ray> rays,
-                                      std::span<double> ranges) {
+                                      std::span<const std::size_t> start_ray, std::span<double> ranges) {
   constexpr int kLanes = kLanesPerGroup * kGroups;
   std::array<Group, kGroups> groups{};
-  std::array<std::size_t, kLanes> ray_of{};
+  std::array<std::size_t, kLanes> start_of{};  // which start each lane walks
   std::size_t next = 0;
   unsigned active = 0;  // lane bits
   for (int lane = 0; lane < kLanes; ++lane) {
     Group& group = groups[static_cast<std::size_t>(lane / kLanesPerGroup)];
     if (next < starts.size()) {
       load_lane(group, lane % kLanesPerGroup, starts[next]);
-      ray_of[static_cast<std::size_t>(lane)] = start_ray[next++];
+      start_of[static_cast<std::size_t>(lane)] = next++;
       active |= 1U << lane;
     } else {
       load_lane(group, lane % kLanesPerGroup, kIdleLane);
@@ -168,14 +167,15 @@ struct StepEnds {
     while (ended != 0) {
       const int lane = __builtin_ctz(ended);
       ended &= ended - 1;
-      const std::size_t ray = ray_of[static_cast<std::size_t>(lane)];
-      const double max_range = rays[ray].max_range;
+      const std::size_t walked = start_of[static_cast<std::size_t>(lane)];
+      const double max_range = starts[walked].max_range;
       const bool hit = ((gone >> lane) & 1U) == 0;
-      ranges[ray] = hit ? std::min(along[static_cast<std::size_t>(lane)] * map.resolution, max_range) : max_range;
+      ranges[start_ray[walked]] =
+          hit ? std::min(along[static_cast<std::size_t>(lane)] * map.resolution, max_range) : max_range;
       Group& group = groups[static_cast<std::size_t>(lane / kLanesPerGroup)];
       if (next < starts.size()) {
         load_lane(group, lane % kLanesPerGroup, starts[next]);
-        ray_of[static_cast<std::size_t>(lane)] = start_ray[next++];
+        start_of[static_cast<std::size_t>(lane)] = next++;
       } else {
         load_lane(group, lane % kLanesPerGroup, kIdleLane);
         active &= ~(1U << lane);
@@ -192,16 +192,15 @@ bool available() {
 }
 
 void walk(const LaneMap& map, std::span<const LaneStart> starts, std::span<const std::size_t> start_ray,
-          std::span<const SquareCaster::Ray> rays, std::span<double> ranges) {
-  walk_all(map, starts, start_ray, rays, ranges);
+          std::span<double> ranges) {
+  walk_all(map, starts, start_ray, ranges);
 }
 
 #else  // not x86-64: the scalar walk only
 
 bool available() { return false; }
 
-void walk(const LaneMap&, std::span<const LaneStart>, std::span<const std::size_t>, std::span<const SquareCaster::Ray>,
-          std::span<double>) {
+void walk(const LaneMap&, std::span<const LaneStart>, std::span<const std::size_t>, std::span<double>) {
   throw std::logic_error("square_caster_lanes::walk: no vector walk on this processor");
 }
 

@@ -7,8 +7,6 @@
 #include <cstdint>
 #include <span>
 
-#include "algorithms/grid/square_caster.hpp"
-
 namespace playerkit::grid::lanes {
 
 // One ray's walk as a lane holds it: start()'s Walk and first cell, in
@@ -17,6 +15,7 @@ struct LaneStart {
   double x, y, dx, dy, inverse_x, inverse_y, length;
   double step_x, behind_x, step_y, behind_y;  // behind: 1 when the step is -1, else 0
   double col, row, clearance;
+  double max_range;  // m, the answer when the walk leaves the grid or passes it
 };
 
 // The map as the lanes read it.
@@ -32,6 +31,6 @@ struct LaneMap {
 // Walks every start to its end and writes ranges[start_ray[i]] for start i,
 // as SquareCaster's scalar walk would. Only where available().
 void walk(const LaneMap& map, std::span<const LaneStart> starts, std::span<const std::size_t> start_ray,
-          std::span<const SquareCaster::Ray> rays, std::span<double> ranges);
+          std::span<double> ranges);
 
 }  // namespace playerkit::grid::lanes

@@ -333,5 +333,49 @@ TEST(SquareCaster, TheVectorWalkerIsTakenWhereThereIsOne) {
 #endif
 }
 
+// A fan (one origin, one max_range) gives ranges()'s answers bit for bit,
+// whichever walker, from origins in clear cells, in walls, off the grid,
+// and for directions that are not finite or have no length.
+TEST(SquareCaster, AFanAnswersAsItsRaysDo) {
+  const OccupancyGrid grid = rooms();
+  std::mt19937 random(99);
+  std::uniform_real_distribution<double> x(-2.5, 4.5), y(-1.5, 4.0), angle(-std::numbers::pi, std::numbers::pi);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  int walls = 0, zeros = 0;
+  for (const RayStop stop : kBothStops) {
+    const SquareCaster caster(grid, stop);
+    for (int fan = 0; fan < 60; ++fan) {
+      const Eigen::Vector2d origin{x(random), y(random)};
+      const double max_range = fan % 7 == 0 ? 0.0 : 0.5 + 0.1 * fan;
+      const std::size_t count = fan % 3 == 0 ? 9 : 181;  // a few rays take the scalar walk
+      std::vector<Eigen::Vector2d> directions;
+      std::vector<SquareCaster::Ray> rays;
+      for (std::size_t i = 0; i < count; ++i) {
+        const double a = angle(random);
+        Eigen::Vector2d direction{std::cos(a), std::sin(a)};
+        if (i == 3) direction = {nan, 0.0};
+        if (i == 5) direction = Eigen::Vector2d::Zero();
+        directions.push_back(direction);
+        rays.push_back({origin, direction, max_range});
+      }
+      for (const auto walker : {SquareCaster::Walker::automatic, SquareCaster::Walker::scalar}) {
+        std::vector<double> by_fan(count), by_rays(count);
+        caster.fan_ranges(origin, directions, max_range, by_fan, walker);
+        caster.ranges(rays, by_rays, SquareCaster::Walker::scalar);
+        for (std::size_t i = 0; i < count; ++i) {
+          ASSERT_EQ(by_fan[i], by_rays[i]) << "fan " << fan << " ray " << i;
+          walls += by_fan[i] > 0.0 && by_fan[i] < max_range;
+          zeros += by_fan[i] == 0.0 && max_range > 0.0;
+        }
+      }
+    }
+  }
+  EXPECT_GT(walls, 5000);
+  EXPECT_GT(zeros, 100);  // origins in stopping cells
+  const SquareCaster caster(grid, RayStop::occupied);
+  std::vector<double> too_few(1);
+  EXPECT_THROW(caster.fan_ranges({0.0, 0.0}, std::vector<Eigen::Vector2d>(2), 1.0, too_few), std::invalid_argument);
+}
+
 }  // namespace square_caster_test
 }  // namespace playerkit::grid

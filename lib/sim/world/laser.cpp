@@ -22,12 +22,12 @@ LaserScan scan_laser(const Scene& scene, const LaserSpec& spec, const geometry::
   // Every sample draws the same numbers in the same order whatever it
   // meets, so one beam's noise never depends on what another beam hit.
   thread_local std::vector<double> jitters, gaussian, proportional;
-  thread_local std::vector<SceneRay> rays;
+  thread_local std::vector<Eigen::Vector2d> directions;
   thread_local std::vector<RayHit> hits;
   jitters.assign(count, 0.0);
   gaussian.assign(count, 0.0);
   proportional.assign(count, 0.0);
-  rays.resize(count);
+  directions.resize(count);
   hits.resize(count);
   const double jitter_width = spacing * spec.angle_jitter;
   if (jitter_width != 0.0 || spec.noise_sd != 0.0 || spec.noise_proportional != 0.0) {
@@ -49,18 +49,17 @@ LaserScan scan_laser(const Scene& scene, const LaserSpec& spec, const geometry::
   double direction_x = std::cos(sensor_pose.yaw + scan.min_angle);
   double direction_y = std::sin(sensor_pose.yaw + scan.min_angle);
   for (std::size_t i = 0; i < count; ++i) {
-    rays[i].origin = origin;
     if (jitters[i] != 0.0) {
       const double angle = sensor_pose.yaw + scan.min_angle + spacing * static_cast<double>(i) + jitters[i];
-      rays[i].direction = {std::cos(angle), std::sin(angle)};
+      directions[i] = {std::cos(angle), std::sin(angle)};
     } else {
-      rays[i].direction = {direction_x, direction_y};
+      directions[i] = {direction_x, direction_y};
     }
     const double turned_x = direction_x * turn_cos - direction_y * turn_sin;
     direction_y = direction_x * turn_sin + direction_y * turn_cos;
     direction_x = turned_x;
   }
-  scene.cast_all(rays, spec.range_max, own_root, hits);
+  scene.cast_fan(origin, directions, spec.range_max, own_root, hits);
 
   scan.ranges.reserve(count);
   scan.intensities.reserve(count);

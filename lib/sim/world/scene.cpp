@@ -149,6 +149,41 @@ void Scene::cast_all(std::span<const SceneRay> rays, double max_range, ModelId i
   for (std::size_t k = 0; k < count; ++k) {
     if (walls[k] < walked[k].max_range) hits[walked_ray[k]] = {.range = offsets[k] + walls[k], .model = kNoModel, .wall = true};
   }
+  add_bodies(rays, max_range, ignore_root, hits);
+}
+
+void Scene::cast_fan(const Eigen::Vector2d& origin, std::span<const Eigen::Vector2d> directions, double max_range,
+                     ModelId ignore_root, std::span<RayHit> hits) const {
+  if (directions.size() != hits.size()) {
+    throw std::invalid_argument("Scene::cast_fan: " + std::to_string(directions.size()) + " directions but room for " +
+                                std::to_string(hits.size()) + " hits");
+  }
+  thread_local std::vector<SceneRay> rays;  // for the cases cast_all answers, and the bodies
+  const auto as_rays = [&] {
+    rays.resize(directions.size());
+    for (std::size_t i = 0; i < directions.size(); ++i) rays[i] = {origin, directions[i]};
+    return std::span<const SceneRay>(rays);
+  };
+  const Eigen::Vector2d low = map_.origin();
+  const Eigen::Vector2d high = low + map_.resolution() * Eigen::Vector2d(map_.width(), map_.height());
+  const bool on_map = !map_.empty() && origin.x() >= low.x() && origin.y() >= low.y() && origin.x() < high.x() &&
+                      origin.y() < high.y();
+  if (!(max_range > 0.0) || !on_map) {  // nothing to walk, or a walk that starts where the ray enters the map
+    cast_all(as_rays(), max_range, ignore_root, hits);
+    return;
+  }
+  thread_local std::vector<double> walls;
+  walls.resize(directions.size());
+  walls_.fan_ranges(origin, directions, max_range, walls);
+  for (std::size_t i = 0; i < directions.size(); ++i) {
+    hits[i] = walls[i] < max_range ? RayHit{.range = walls[i], .model = kNoModel, .wall = true}
+                                   : RayHit{.range = max_range};
+  }
+  if (visible_bodies_beyond(ignore_root)) add_bodies(as_rays(), max_range, ignore_root, hits);
+}
+
+void Scene::add_bodies(std::span<const SceneRay> rays, double max_range, ModelId ignore_root,
+                       std::span<RayHit> hits) const {
   if (!visible_bodies_beyond(ignore_root) || !(max_range > 0.0)) return;
   if (rays.size() >= kFewestRaysToFile) {
     nearest_bodies(rays, ignore_root, hits);

@@ -245,10 +245,23 @@ TEST(Scene, CastAllAnswersWhatCastAnswersForEachRay) {
       EXPECT_EQ(hits[i].model, alone.model) << place << " " << i;
       fan_bodies += alone.model != kNoModel;
     }
+    if (ring == 0.0) {  // one origin: the fan answers alike
+      std::vector<Eigen::Vector2d> directions;
+      for (const SceneRay& ray : rays) directions.push_back(ray.direction);
+      std::vector<RayHit> fan_hits(rays.size());
+      world.scene.cast_fan(centre, directions, 3.0, kNoModel, fan_hits);
+      for (std::size_t i = 0; i < rays.size(); ++i) {
+        EXPECT_EQ(fan_hits[i].range, hits[i].range) << place << " " << i;
+        EXPECT_EQ(fan_hits[i].model, hits[i].model) << place << " " << i;
+        EXPECT_EQ(fan_hits[i].wall, hits[i].wall) << place << " " << i;
+      }
+    }
   }
   EXPECT_GT(fan_bodies, 1000);
   std::vector<RayHit> too_few(1);
   EXPECT_THROW(world.scene.cast_all(std::vector<SceneRay>(2), 4.0, kNoModel, too_few), std::invalid_argument);
+  EXPECT_THROW(world.scene.cast_fan({0.0, 0.0}, std::vector<Eigen::Vector2d>(2), 4.0, kNoModel, too_few),
+               std::invalid_argument);
 }
 
 TEST(Scene, AFilterDecidesWhichBodiesStopARay) {
