@@ -58,8 +58,14 @@ struct BatchBody {
 
 Scene::Scene(grid::OccupancyGrid map) : map_(std::move(map)), walls_(map_, grid::RayStop::occupied) {
   if (map_.empty()) return;
-  const Eigen::Vector2d extent(map_.width() * map_.resolution(), map_.height() * map_.resolution());
-  index_.cover(map_.origin(), map_.origin() + extent);
+  map_low_ = map_.origin();
+  map_high_ = map_low_ + map_.resolution() * Eigen::Vector2d(map_.width(), map_.height());
+  index_.cover(map_low_, map_high_);
+}
+
+bool Scene::on_map(const Eigen::Vector2d& point) const {
+  return !map_.empty() && point.x() >= map_low_.x() && point.y() >= map_low_.y() && point.x() < map_high_.x() &&
+         point.y() < map_high_.y();
 }
 
 // The caster answers rays that start on the map; one that starts off it
@@ -68,11 +74,9 @@ Scene::WallWalk Scene::wall_walk(const Eigen::Vector2d& origin, const Eigen::Vec
                                  double max_range) const {
   WallWalk walk;
   if (map_.empty()) return walk;
-  const Eigen::Vector2d low = map_.origin();
-  const Eigen::Vector2d high = low + map_.resolution() * Eigen::Vector2d(map_.width(), map_.height());
-  if ((origin.array() >= low.array()).all() && (origin.array() < high.array()).all()) {
-    return {.on_map = true, .ray = {origin, direction, max_range}, .offset = 0.0};
-  }
+  if (on_map(origin)) return {.on_map = true, .ray = {origin, direction, max_range}, .offset = 0.0};
+  const Eigen::Vector2d& low = map_low_;
+  const Eigen::Vector2d& high = map_high_;
   double enter = 0.0;
   double leave = max_range;
   for (int axis = 0; axis < 2; ++axis) {
@@ -127,17 +131,14 @@ void Scene::cast_all(std::span<const SceneRay> rays, double max_range, ModelId i
   offsets.resize(rays.size());
   std::size_t count = 0;
   const bool usable = max_range > 0.0 && !map_.empty();
-  const Eigen::Vector2d low = map_.origin();
-  const Eigen::Vector2d high = low + map_.resolution() * Eigen::Vector2d(map_.width(), map_.height());
   for (std::size_t i = 0; i < rays.size(); ++i) {
     hits[i] = {.range = max_range};
     const SceneRay& ray = rays[i];
     if (!usable || !ray.direction.allFinite() || !ray.origin.allFinite()) continue;
-    const bool on_map = ray.origin.x() >= low.x() && ray.origin.y() >= low.y() && ray.origin.x() < high.x() &&
-                        ray.origin.y() < high.y();
-    // A laser's rays start on the map (wall_walk's first case, inline).
-    const WallWalk walk = on_map ? WallWalk{.on_map = true, .ray = {ray.origin, ray.direction, max_range}, .offset = 0.0}
-                                 : wall_walk(ray.origin, ray.direction, max_range);
+    // Most rays start on the map (wall_walk's first case, inline).
+    const WallWalk walk = on_map(ray.origin)
+                              ? WallWalk{.on_map = true, .ray = {ray.origin, ray.direction, max_range}, .offset = 0.0}
+                              : wall_walk(ray.origin, ray.direction, max_range);
     if (!walk.on_map) continue;
     walked[count] = walk.ray;
     walked_ray[count] = i;
@@ -164,11 +165,7 @@ void Scene::cast_fan(const Eigen::Vector2d& origin, std::span<const Eigen::Vecto
     for (std::size_t i = 0; i < directions.size(); ++i) rays[i] = {origin, directions[i]};
     return std::span<const SceneRay>(rays);
   };
-  const Eigen::Vector2d low = map_.origin();
-  const Eigen::Vector2d high = low + map_.resolution() * Eigen::Vector2d(map_.width(), map_.height());
-  const bool on_map = !map_.empty() && origin.x() >= low.x() && origin.y() >= low.y() && origin.x() < high.x() &&
-                      origin.y() < high.y();
-  if (!(max_range > 0.0) || !on_map) {  // nothing to walk, or a walk that starts where the ray enters the map
+  if (!(max_range > 0.0) || !on_map(origin)) {  // nothing to walk, or a walk that starts where the ray enters the map
     cast_all(as_rays(), max_range, ignore_root, hits);
     return;
   }

@@ -109,6 +109,8 @@ class Scene {
     grid::SquareCaster::Ray ray;
     double offset = 0.0;
   };
+  // Whether `point` lies on the map (its cells' half-open extent).
+  [[nodiscard]] bool on_map(const Eigen::Vector2d& point) const;
   [[nodiscard]] WallWalk wall_walk(const Eigen::Vector2d& origin, const Eigen::Vector2d& direction,
                                    double max_range) const;
   // cast_all's bodies (by the default rule): lowers each hit to the nearest
@@ -128,6 +130,7 @@ class Scene {
   void count_visible(const SceneModel& model, int change);
 
   grid::OccupancyGrid map_;
+  Eigen::Vector2d map_low_ = Eigen::Vector2d::Zero(), map_high_ = Eigen::Vector2d::Zero();  // the map's extent
   grid::SquareCaster walls_;
   // Bodies a default ray meets (present, solid, ranger return >= 0): in
   // all, and per top-level tree (indexed by root id).
