@@ -9,9 +9,13 @@
 
 namespace playerkit::amcl::field_lanes {
 
+// Bytes readable after the last cell's code: the vector scoring reads four
+// at a cell.
+inline constexpr std::size_t kReadPadding = 3;
+
 // The field as the lanes read it.
 struct FieldTable {
-  const std::uint8_t* codes;  // row-major distance codes, three readable bytes after the last
+  const std::uint8_t* codes;  // row-major distance codes, kReadPadding readable bytes after the last
   const float* log_by_code;   // log p per code
   float log_outside;          // log p of an endpoint off the map
   int width, height;

@@ -14,8 +14,8 @@ LikelihoodFieldModel::LikelihoodFieldModel(const grid::OccupancyGrid& map, doubl
   const grid::DistanceMap distances(map, max_distance);
   max_distance_ = distances.max_distance();
   const double codes_per_metre = max_distance_ > 0.0 ? (kDistanceCodes - 1) / max_distance_ : 0.0;
-  // Three bytes more than cells: the vector scoring reads four at a cell.
-  distance_codes_.resize(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) + 3);
+  distance_codes_.resize(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) +
+                         field_lanes::kReadPadding);
   for (int row = 0; row < height_; ++row) {
     for (int col = 0; col < width_; ++col) {
       const double code = std::min(std::round(distances.at(col, row) * codes_per_metre), kDistanceCodes - 1.0);

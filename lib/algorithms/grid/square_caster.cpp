@@ -16,22 +16,14 @@ namespace {
 constexpr int kMostClearance = 255;
 // Fewer rays than this take the scalar walk (see ranges()).
 constexpr std::size_t kFewestRaysForVectors = 32;
-// Bytes after the last cell: the vector walk reads four bytes at a cell.
-constexpr std::size_t kReadPadding = 3;
 // Walks a batch advances side by side: each step is a chain of dependent
 // arithmetic and a memory read, which independent walks overlap (4 measured
 // faster than 2, 3, 6 or 8 on the build machine).
 constexpr std::size_t kSideBySide = 4;
-// A direction component this small counts as 0: its crossings are then
-// "never" (kNeverInverse times the distance, finite so that no inf * 0
-// appears), and a ray with both components this small has no direction.
-constexpr double kNoComponent = 1e-300;
-constexpr double kNeverInverse = 1e300;
-// floor() by truncation of a shifted value: the coordinates floored lie
-// within the square being left, so never below -256, and truncation needs
-// no call or branch where SSE4.1 is not assumed. Shifting may round a value
-// within 1e-13 of a cell border across it: a tie the ray decides either way.
-constexpr double kFloorShift = 512.0;
+using lanes::kFloorShift;
+using lanes::kNeverInverse;
+using lanes::kNoComponent;
+using lanes::kReadPadding;
 
 bool square_caster_stops(CellState state, RayStop stop) {
   return stop == RayStop::occupied ? state == CellState::occupied : state != CellState::free;

@@ -34,11 +34,9 @@ namespace {
 
 constexpr int kLanesPerGroup = 4;
 constexpr int kGroups = 4;
-constexpr double kVectorFloorShift = 512.0;  // as kFloorShift in square_caster.cpp
-constexpr double kVectorNeverInverse = 1e300;       // as kNeverInverse there
 
 // A lane with no ray: every step ends at once (length 0) in cell (0, 0).
-constexpr LaneStart kIdleLane{0.5, 0.5, 1.0, 0.0, 1.0, kVectorNeverInverse, 0.0,
+constexpr LaneStart kIdleLane{0.5, 0.5, 1.0, 0.0, 1.0, kNeverInverse, 0.0,
                               1.0, 0.0,  1.0, 0.0, 0.0, 0.0, 1.0, 0.0};
 
 struct Group {
@@ -83,7 +81,7 @@ struct StepEnds {
 // The scalar floor_cell: truncation of the shifted value, which is
 // positive, so its floor.
 [[gnu::target("avx2"), gnu::always_inline]] inline __m256d floor_cell(__m256d cells_from_corner) {
-  const __m256d shift = _mm256_set1_pd(kVectorFloorShift);
+  const __m256d shift = _mm256_set1_pd(kFloorShift);
   return _mm256_sub_pd(_mm256_floor_pd(_mm256_add_pd(cells_from_corner, shift)), shift);
 }
 

@@ -9,6 +9,20 @@
 
 namespace playerkit::grid::lanes {
 
+// What both walks must agree on, for the same answers bit for bit.
+// A direction component this small counts as 0: its crossings are then
+// "never" (kNeverInverse times the distance, finite so that no inf * 0
+// appears), and a ray with both components this small has no direction.
+inline constexpr double kNoComponent = 1e-300;
+inline constexpr double kNeverInverse = 1e300;
+// floor() by truncation of a shifted value: the coordinates floored lie
+// within the square being left, so never below -256, and truncation needs
+// no call or branch where SSE4.1 is not assumed. Shifting may round a value
+// within 1e-13 of a cell border across it: a tie the ray decides either way.
+inline constexpr double kFloorShift = 512.0;
+// Bytes readable after the last cell: the vector walk reads four at a cell.
+inline constexpr std::size_t kReadPadding = 3;
+
 // One ray's walk as a lane holds it: start()'s Walk and first cell, in
 // doubles (cell numbers are whole numbers, exact in a double).
 struct LaneStart {
@@ -20,7 +34,7 @@ struct LaneStart {
 
 // The map as the lanes read it.
 struct LaneMap {
-  const std::uint8_t* cells;  // row-major clearances, with three readable bytes after the last
+  const std::uint8_t* cells;  // row-major clearances, kReadPadding readable bytes after the last
   int width, height;          // width * height < 2^31
   double resolution;
 };
