@@ -96,7 +96,10 @@ TerminalLine PseudoTerminal::slave_line() const { return read_terminal_line(mast
 
 void PseudoTerminal::mark_closed(Received& received) {
   open_descriptions_ = 0;
-  if (host_connected_) received.host_closed = true;
+  if (host_connected_) {
+    received.host_closed = true;
+    received.host_reopened = false;  // whatever opened before is closed again
+  }
   host_connected_ = false;
 }
 
@@ -114,6 +117,7 @@ void PseudoTerminal::take_open_events(Received& received) {
         host_connected_ = true;
         master_hung_up_ = false;
         received.host_opened = true;
+        received.host_reopened = received.host_closed;
       }
       if ((event.mask & (IN_CLOSE_WRITE | IN_CLOSE_NOWRITE)) != 0 && open_descriptions_ > 0 &&
           --open_descriptions_ == 0) {
@@ -173,6 +177,7 @@ PseudoTerminal::Received PseudoTerminal::read_some(std::span<std::uint8_t> buffe
       master_hung_up_ = false;
       host_connected_ = true;
       received.host_opened = true;
+      received.host_reopened = received.host_closed;
     }
   }
 }

@@ -56,6 +56,9 @@ class PseudoTerminal {
     std::size_t count = 0;     // bytes the host wrote, now in the buffer
     bool host_opened = false;  // the host opened the slave during this call
     bool host_closed = false;  // the host closed it (after writing `count` bytes)
+    // Both of the above, the close first: one session ended and the next one
+    // began before this call, so `count` bytes belong to the new session.
+    bool host_reopened = false;
   };
   // Waits until the host writes, opens or closes the slave, or until the
   // deadline; returns at once with any of those.

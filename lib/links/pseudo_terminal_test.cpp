@@ -127,6 +127,39 @@ TEST(PseudoTerminal, ReportsTheCloseOnceWithTheLastBytes) {
   EXPECT_EQ(pty.read_some(buffer, deadline_in(10ms)).host_closed, false);
 }
 
+TEST(PseudoTerminal, AHostThatClosesAndReopensBetweenTwoReadsIsANewSession) {
+  PseudoTerminal pty;
+  int host = ::open(pty.slave_path().c_str(), O_RDWR | O_NOCTTY);
+  ASSERT_GE(host, 0);
+  ASSERT_TRUE(await_host(pty, true));
+  ::close(host);
+  host = ::open(pty.slave_path().c_str(), O_RDWR | O_NOCTTY);
+  ASSERT_GE(host, 0);
+  ASSERT_EQ(::write(host, "hi", 2), 2);
+  std::uint8_t buffer[16];
+  const auto got = pty.read_some(buffer, deadline_in(kPatience));
+  EXPECT_TRUE(got.host_closed);
+  EXPECT_TRUE(got.host_opened);
+  EXPECT_TRUE(got.host_reopened);  // the close came first
+  EXPECT_EQ(got.count, 2u);
+  EXPECT_TRUE(pty.host_connected());
+  // Open, then closed again before anyone read: not a reopen any more.
+  ::close(host);
+  host = ::open(pty.slave_path().c_str(), O_RDWR | O_NOCTTY);
+  ASSERT_GE(host, 0);
+  ::close(host);
+  std::size_t closes = 0, reopens = 0;
+  const Deadline deadline = deadline_in(kPatience);
+  while (pty.host_connected() && LinkClock::now() < deadline) {
+    const auto next = pty.read_some(buffer, deadline);
+    closes += next.host_closed ? 1 : 0;
+    reopens += next.host_reopened ? 1 : 0;
+  }
+  EXPECT_FALSE(pty.host_connected());
+  EXPECT_EQ(closes, 1u);
+  EXPECT_EQ(reopens, 0u);
+}
+
 TEST(PseudoTerminal, ReadTimesOutAtTheDeadline) {
   PseudoTerminal pty;
   auto host = SerialLink::open(pty.path(), {});

@@ -98,6 +98,9 @@ void EmulatorRunner::run_pty() {
       std::this_thread::sleep_for(kPollSlice);
       continue;
     }
+    // A host that closed and opened again between two reads: the device
+    // must forget the old session before it hears the new one's first bytes.
+    if (got.host_reopened) host_left();
     if (got.host_opened) {
       std::lock_guard lock(mutex_);
       ++stats_.host_connects;
@@ -109,7 +112,7 @@ void EmulatorRunner::run_pty() {
         stats_.bytes_out += chunk.size();
       }
     }
-    if (got.host_closed) host_left();
+    if (got.host_closed && !got.host_reopened) host_left();
   }
 }
 

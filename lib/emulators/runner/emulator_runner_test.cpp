@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <thread>
@@ -26,9 +27,12 @@ class ToyDevice final : public DeviceEmulator {
       } else if (byte == 'g') {
         ticking_ = true;
         next_tick_ = now;
+      } else if (byte == 'w') {
+        hold_until_released();
       }
     }
     ++receives;
+    events += 'R';
   }
   void advance(Duration now) override {
     while (ticking_ && next_tick_ <= now) {
@@ -38,11 +42,25 @@ class ToyDevice final : public DeviceEmulator {
   }
   Duration next_deadline() const override { return ticking_ ? next_tick_ : Duration::max(); }
   std::vector<Telegram> take_output() override { return std::exchange(out_, {}); }
-  void host_disconnected(Duration) override { ++disconnects; }
+  void host_disconnected(Duration) override {
+    ++disconnects;
+    events += 'D';
+  }
   std::string describe() const override { return "toy"; }
+
+  // "w" keeps the runner busy in receive() until release (bounded), so a test
+  // can make the host act while the runner is not reading.
+  void hold_until_released() {
+    held = true;
+    for (int i = 0; i < 500 && !released; ++i) std::this_thread::sleep_for(10ms);
+    held = false;
+  }
 
   int receives = 0;
   int disconnects = 0;
+  std::string events;  // R: bytes received, D: host gone, in the order seen
+  std::atomic<bool> held{false};
+  std::atomic<bool> released{false};
 
  private:
   std::vector<Telegram> out_;
@@ -114,6 +132,26 @@ TEST(EmulatorRunner, AHostClosingThePortIsSeenAndMayComeBack) {
   }
   EXPECT_TRUE(seen);
   EXPECT_GE(runner.stats().host_connects, 2u);
+}
+
+TEST(EmulatorRunner, AHostThatReopensWhileTheRunnerIsBusyStartsAFreshSession) {
+  // The close and the reopen reach the runner in one read, together with the
+  // new session's first bytes: the device must hear the hang-up first, or it
+  // resets after the new session has begun (a p2os robot then forgets SYNC0).
+  auto device = std::make_unique<ToyDevice>();
+  ToyDevice& toy = *device;
+  EmulatorRunner runner(std::move(device), PtyEndpoint{});
+  auto first = links::open_link(runner.device_path(), {});
+  send(*first, "w");
+  for (int i = 0; i < 200 && !toy.held; ++i) std::this_thread::sleep_for(10ms);
+  ASSERT_TRUE(toy.held);
+  first.reset();
+  auto second = links::open_link(runner.device_path(), {});
+  send(*second, "?");
+  toy.released = true;
+  EXPECT_EQ(read_for(*second, 300ms).substr(0, 1), "!");
+  EXPECT_EQ(runner.with_emulator<ToyDevice>([](ToyDevice& d) { return d.events; }), "RDR");
+  EXPECT_EQ(runner.stats().host_connects, 2u);
 }
 
 TEST(EmulatorRunner, WorksOnALoopbackTcpPortToo) {
