@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <limits>
 #include <stdexcept>
@@ -40,6 +41,35 @@ constexpr std::array<Neighbour, 8> kNeighbours{{
     {-1, -1, true}, {0, -1, false}, {1, -1, true}, {-1, 0, false},
     {1, 0, false},  {-1, 1, true},  {0, 1, false}, {1, 1, true},
 }};
+
+// The shortest 8-connected way between two cells, in cells.
+double octile(int dcol, int drow) {
+  const int a = std::abs(dcol), b = std::abs(drow);
+  return std::max(a, b) + (kSqrt2 - 1.0) * std::min(a, b);
+}
+
+// A lower bound on the cost from a cell to the start, for the search from
+// the goal: every step costs at least its length, so the way to a candidate
+// start cell c costs at least octile(cell, c), and the way in from c at least
+// octile(cell, start's cell) - slack, slack being the most any candidate
+// saves. It changes by at most a step's length across a step (consistent).
+// Shrunk a little, so float rounding never lifts it above the true cost.
+// Off, it is 0 everywhere.
+class RemainingBound {
+ public:
+  RemainingBound(bool on, int col, int row, double slack)
+      : col_(col), row_(row), slack_(static_cast<float>(slack)), shrink_(on ? 0.9999f : 0.0f) {}
+  float operator()(int col, int row) const {
+    const auto a = static_cast<float>(std::abs(col - col_)), b = static_cast<float>(std::abs(row - row_));
+    return std::max((std::max(a, b) + kDiagonalExtra * std::min(a, b) - slack_) * shrink_, 0.0f);
+  }
+
+ private:
+  static constexpr float kDiagonalExtra = static_cast<float>(kSqrt2 - 1.0);
+  int col_, row_;
+  float slack_;
+  float shrink_;
+};
 
 }  // namespace
 
@@ -107,11 +137,11 @@ WavefrontPlanner::WavefrontPlanner(const grid::OccupancyGrid& grid, const Planne
       out[col].bits = class_of[static_cast<std::size_t>(clearance_.quarter_squared(col, row))];
     }
   }
-  // Every step costs at least 1, so a bucket one cost unit wide never feeds
-  // itself and its cells may be settled in any order (Dial's algorithm);
-  // live buckets span at most the heaviest step.
-  // A power of two, so the bucket of a cost is a mask away.
-  const auto needed = static_cast<std::size_t>(std::ceil(kSqrt2 * step_weight_[kLevelMask])) + 2;
+  // Buckets one cost unit wide (plan()). A step raises the estimate of the
+  // whole way by at most its cost plus its length, so live buckets span at
+  // most that for the heaviest diagonal step. A power of two, so the bucket
+  // of an estimate is a mask away.
+  const auto needed = static_cast<std::size_t>(std::ceil(kSqrt2 * (step_weight_[kLevelMask] + 1.0))) + 2;
   std::size_t bucket_count = 1;
   while (bucket_count < needed) bucket_count *= 2;
   buckets_.resize(bucket_count);
@@ -199,28 +229,6 @@ PlanResult WavefrontPlanner::plan(const Eigen::Vector2d& start, const Eigen::Vec
     generation_ = 1;
     for (Cell& cell : cells_) cell.bits &= kKindMask;
   }
-  // Locals, so that the loop below keeps them in registers.
-  Cell* const cells = cells_.data();
-  const auto generation = static_cast<std::uint16_t>(generation_);
-  const auto stamp = static_cast<std::uint16_t>(generation << kGenerationShift);
-  const std::size_t bucket_mask = buckets_.size() - 1;
-  std::array<float, kLevelMask + 1> step_weight = step_weight_;
-  std::size_t queued = 0;
-  for (auto& bucket : buckets_) bucket.clear();
-  const auto push = [&](std::size_t cell, float cost) {
-    buckets_[static_cast<std::size_t>(cost) & bucket_mask].push_back({static_cast<std::uint32_t>(cell), cost});
-    ++queued;
-  };
-  const auto current = [&](const Cell& cell) { return (cell.bits >> kGenerationShift) == generation; };
-  for (const Connection& c : goal_cells) {
-    const auto cost = static_cast<float>(c.cost);
-    Cell& cell = cells[c.cell];
-    if (!current(cell) || cost < cell.cost) {
-      cell.cost = cost;
-      cell.bits = static_cast<std::uint16_t>((cell.bits & kKindMask) | stamp);  // no successor: the goal is next
-      push(c.cell, cost);
-    }
-  }
   // The start's candidate cells lie in a small box: most settled cells are
   // ruled out by one comparison.
   std::size_t start_box_first = std::numeric_limits<std::size_t>::max(), start_box_last = 0;
@@ -228,14 +236,61 @@ PlanResult WavefrontPlanner::plan(const Eigen::Vector2d& start, const Eigen::Vec
     start_box_first = std::min(start_box_first, c.cell);
     start_box_last = std::max(start_box_last, c.cell);
   }
+  const Eigen::Vector2i start_cell = clearance_.cell_of(start);
+  const RemainingBound remaining(goal_directed_, start_cell.x() + 1, start_cell.y() + 1, [&] {
+    // How much shorter than the octile distance to the start's own cell the
+    // way in through a candidate cell can be.
+    double slack = 0.0;
+    for (const Connection& c : start_cells) {
+      slack = std::max(slack, octile(static_cast<int>(c.cell % stride_) - (start_cell.x() + 1),
+                                     static_cast<int>(c.cell / stride_) - (start_cell.y() + 1)) - c.cost);
+    }
+    return slack;
+  }());
+
+  // Locals, so that the loop below keeps them in registers.
+  Cell* const cells = cells_.data();
+  const auto generation = static_cast<std::uint16_t>(generation_);
+  const auto stamp = static_cast<std::uint16_t>(generation << kGenerationShift);
+  const std::size_t bucket_mask = buckets_.size() - 1;
+  const auto stride = static_cast<std::uint32_t>(stride_);
+  std::array<float, kLevelMask + 1> step_weight = step_weight_;
+  std::size_t queued = 0;
+  std::size_t level = 0;
+  for (auto& bucket : buckets_) bucket.clear();
+  // Bucketed by the estimate of the whole way (cost so far plus the bound on
+  // the rest). Rounding may put an estimate a hair below the bucket being
+  // worked on; it then joins that bucket.
+  const auto push = [&](std::size_t cell, float cost, float estimate) {
+    const std::size_t bucket = std::max(static_cast<std::size_t>(estimate), level) & bucket_mask;
+    buckets_[bucket].push_back({static_cast<std::uint32_t>(cell), cost});
+    ++queued;
+  };
+  const auto current = [&](const Cell& cell) { return (cell.bits >> kGenerationShift) == generation; };
+  const auto goal_estimate = [&](const Connection& c) {
+    return static_cast<float>(c.cost) +
+           remaining(static_cast<int>(c.cell % stride), static_cast<int>(c.cell / stride));
+  };
+  // The first bucket: the least estimate (buckets are a ring).
+  level = std::numeric_limits<std::size_t>::max();
+  for (const Connection& c : goal_cells) level = std::min(level, static_cast<std::size_t>(goal_estimate(c)));
+  for (const Connection& c : goal_cells) {
+    const auto cost = static_cast<float>(c.cost);
+    Cell& cell = cells[c.cell];
+    if (!current(cell) || cost < cell.cost) {
+      cell.cost = cost;
+      cell.bits = static_cast<std::uint16_t>((cell.bits & kKindMask) | stamp);  // no successor: the goal is next
+      push(c.cell, cost, goal_estimate(c));
+    }
+  }
 
   std::array<std::ptrdiff_t, 8> offset{};
   for (std::size_t k = 0; k < 8; ++k) {
     offset[k] = kNeighbours[k].drow * static_cast<std::ptrdiff_t>(stride_) + kNeighbours[k].dcol;
   }
-  // The step from `cell` into its neighbour k. Settled cells never improve
-  // (steps cost at least 1), so they need no test of their own.
-  const auto relax = [&](std::size_t cell, float here, std::size_t k, float length, bool diagonal) {
+  // The step from `cell` (at col, row) into its neighbour k.
+  const auto relax = [&](std::size_t cell, float here, int col, int row, std::size_t k, float length,
+                         bool diagonal) {
     const std::size_t next = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(cell) + offset[k]);
     Cell& to = cells[next];
     const std::uint16_t bits = to.bits;
@@ -244,20 +299,26 @@ PlanResult WavefrontPlanner::plan(const Eigen::Vector2d& start, const Eigen::Vec
     if ((bits >> kGenerationShift) == generation && !(cost < to.cost)) return;
     to.cost = cost;
     to.bits = static_cast<std::uint16_t>((bits & kKindMask) | stamp | kHasSuccessor | ((7 - k) << kDirectionShift));
-    push(next, cost);
+    push(next, cost, cost + remaining(col + kNeighbours[k].dcol, row + kNeighbours[k].drow));
   };
 
+  // A* from the goal: a bucket holds the cells whose estimate of the whole
+  // way lies in one cost unit. The estimate never falls along a step (the
+  // bound is consistent), so a bucket feeds only itself and those after it.
+  // Within a bucket cells are taken in any order, so one may be reached
+  // again more cheaply after it was expanded: it is queued and expanded
+  // again. Every cell whose estimate is below the best total found has been
+  // expanded at its final cost when the loop ends, so the total is the least.
   double best_total = std::numeric_limits<double>::infinity();
   std::size_t best_cell = 0;
   constexpr auto kDiagonal = static_cast<float>(kSqrt2);
-  for (std::size_t level = 0; queued > 0 && static_cast<double>(level) < best_total; ++level) {
+  for (; queued > 0 && static_cast<double>(level) < best_total; ++level) {
     std::vector<Queued>& bucket = buckets_[level & bucket_mask];
-    queued -= bucket.size();
-    const std::size_t count = bucket.size();
-    for (std::size_t i = 0; i < count; ++i) {
+    for (std::size_t i = 0; i < bucket.size(); ++i) {
+      --queued;
       // The front is spread over the map and the loop waits on memory:
       // fetch the three rows around a cell a few entries ahead.
-      if (i + kPrefetchAhead < count) {
+      if (i + kPrefetchAhead < bucket.size()) {
         const Cell* ahead = cells + bucket[i + kPrefetchAhead].cell;
         __builtin_prefetch(ahead - stride_, 1);
         __builtin_prefetch(ahead, 1);
@@ -276,20 +337,23 @@ PlanResult WavefrontPlanner::plan(const Eigen::Vector2d& start, const Eigen::Vec
           }
         }
       }
-      relax(cell, here, 1, 1.0f, false);
-      relax(cell, here, 3, 1.0f, false);
-      relax(cell, here, 4, 1.0f, false);
-      relax(cell, here, 6, 1.0f, false);
+      const auto row = static_cast<int>(entry.cell / stride);
+      const auto col = static_cast<int>(entry.cell - static_cast<std::uint32_t>(row) * stride);
+      relax(cell, here, col, row, 1, 1.0f, false);
+      relax(cell, here, col, row, 3, 1.0f, false);
+      relax(cell, here, col, row, 4, 1.0f, false);
+      relax(cell, here, col, row, 6, 1.0f, false);
       if (cells[cell].bits & kDiagonalOk) {
-        relax(cell, here, 0, kDiagonal, true);
-        relax(cell, here, 2, kDiagonal, true);
-        relax(cell, here, 5, kDiagonal, true);
-        relax(cell, here, 7, kDiagonal, true);
+        relax(cell, here, col, row, 0, kDiagonal, true);
+        relax(cell, here, col, row, 2, kDiagonal, true);
+        relax(cell, here, col, row, 5, kDiagonal, true);
+        relax(cell, here, col, row, 7, kDiagonal, true);
       }
     }
     bucket.clear();
   }
   if (!std::isfinite(best_total)) return result;  // unreachable
+  result.cost = best_total;
 
   std::vector<Eigen::Vector2d> chain{start};
   for (std::size_t cell = best_cell;;) {

@@ -67,6 +67,9 @@ struct PlanResult {
   // Along every segment; capped at the planner's clearance().reach().
   double min_clearance_m = 0.0;
   std::size_t cells_settled = 0;  // by the wavefront (0 when the goal was in sight)
+  // The wavefront's cost of the chain from the start to the goal, in cells,
+  // penalties included: the navigation function at the start (0 in sight).
+  double cost = 0.0;
 
   bool found() const { return status == PlanStatus::found; }
 };
@@ -85,6 +88,12 @@ class WavefrontPlanner {
   // start, the chain, the waypoints. Reuses its buffers (not thread-safe);
   // the answer depends only on the map, the parameters, start and goal.
   PlanResult plan(const Eigen::Vector2d& start, const Eigen::Vector2d& goal);
+
+  // The wavefront is steered toward the start by a lower bound on the rest
+  // of the way (A*): the same least cost, a fraction of the cells settled.
+  // Off, it grows evenly from the goal (Dijkstra, as 1.5's does); for
+  // comparison in tests and benchmarks.
+  void use_goal_direction(bool on) { goal_directed_ = on; }
 
   const PlannerParameters& parameters() const { return parameters_; }
   const ClearanceMap& clearance() const { return clearance_; }
@@ -124,6 +133,7 @@ class WavefrontPlanner {
     float cost;  // when queued; the cell has been settled cheaper if it differs
   };
   unsigned generation_ = 0;
+  bool goal_directed_ = true;
   std::vector<std::vector<Queued>> buckets_;
 };
 
