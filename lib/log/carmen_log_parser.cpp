@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "log/text_log_fields.hpp"
+#include "text/decimal_number.hpp"
 #include "text/printable.hpp"
 
 namespace playerkit::log {
@@ -49,7 +50,7 @@ class FieldCursor {
     std::string_view digits = text;
     if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-') digits.remove_prefix(1);
     double value = 0;
-    const auto parsed = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    const auto parsed = text::decimal_from_chars(digits.data(), digits.data() + digits.size(), value);
     if (parsed.ec != std::errc{} || parsed.ptr != digits.data() + digits.size() ||
         !std::isfinite(value)) {
       fields_.fail(next_, name.str() + ": expected a number, got " + quoted_excerpt(text));

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <system_error>
 
+#include "text/decimal_number.hpp"
 #include "text/printable.hpp"
 
 namespace playerkit::log {
@@ -113,8 +114,8 @@ double LineFields::number(std::size_t i, std::string_view what, bool allow_expon
   if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-') digits.remove_prefix(1);
   double value = 0;
   const auto parsed =
-      std::from_chars(digits.data(), digits.data() + digits.size(), value,
-                      allow_exponent ? std::chars_format::general : std::chars_format::fixed);
+      text::decimal_from_chars(digits.data(), digits.data() + digits.size(), value,
+                               allow_exponent ? std::chars_format::general : std::chars_format::fixed);
   if (parsed.ec != std::errc{} || parsed.ptr != digits.data() + digits.size() || !std::isfinite(value)) {
     fail(i, std::string(what) + ": expected a number, got " + quoted_excerpt(text));
   }

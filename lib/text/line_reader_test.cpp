@@ -28,6 +28,22 @@ TEST(ReadLine, ReadsLikeGetline) {
   }
 }
 
+TEST(ReadLine, LinesLongerThanOneChunkReadLikeGetline) {
+  // The reader takes 4 KB at a time: lines on either side of that size.
+  for (const std::size_t length : {4094u, 4095u, 4096u, 4097u, 8190u, 8191u, 8192u, 12289u}) {
+    const std::string a(length, 'a'), b(length + 1, 'b');
+    for (const std::string& text : {a, a + "\n", a + "\n" + b, a + "\n\n" + b + "\n"}) {
+      std::istringstream ours(text);
+      std::istringstream theirs(text);
+      std::vector<std::string> expected;
+      std::string line;
+      while (std::getline(theirs, line)) expected.push_back(line);
+      EXPECT_EQ(all_lines(ours), expected) << length;
+      EXPECT_EQ(ours.rdstate(), theirs.rdstate()) << length;
+    }
+  }
+}
+
 TEST(ReadLine, EofTellsWhetherTheLastLineEndedWithANewline) {
   std::string line;
   std::istringstream ended("a\n");
@@ -59,6 +75,17 @@ TEST(ReadLine, ALongerLineIsAnErrorNamingFileAndLine) {
   ASSERT_TRUE(read_line(in, line, "run.log", 3, 16));
   EXPECT_EQ(line, "after");
   EXPECT_FALSE(read_line(in, line, "run.log", 4, 16));
+}
+
+TEST(ReadLine, ACapBeyondOneChunkIsKeptToTheByte) {
+  std::istringstream in(std::string(5000, 'x') + "\n" + std::string(5001, 'y') + "\nlast");
+  std::string line;
+  ASSERT_TRUE(read_line(in, line, "run.log", 1, 5000));
+  EXPECT_EQ(line.size(), 5000u);
+  EXPECT_THROW(read_line(in, line, "run.log", 2, 5000), LineTooLongError);
+  EXPECT_EQ(line, std::string(5000, 'y'));
+  ASSERT_TRUE(read_line(in, line, "run.log", 3, 5000));
+  EXPECT_EQ(line, "last");
 }
 
 TEST(ReadLine, AHugeLineCostsOnlyTheCap) {
