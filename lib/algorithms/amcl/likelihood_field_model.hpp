@@ -60,7 +60,8 @@ class LikelihoodFieldModel {
   LaserModelSettings table_settings_;
   double table_max_range_ = 0.0;
   std::vector<double> hit_x_, hit_y_;  // endpoints of beams that returned
-  std::vector<float> particle_values_;  // one particle's, per beam
+  std::vector<float> particle_values_;  // a batch of particles', per beam
+  std::vector<std::size_t> every_beam_;  // 0, 1, ... : no beam skipped
   std::vector<float> beam_values_;     // beam skipping: per particle, per beam
   std::vector<double> explained_weight_;  // beam skipping: per beam
   std::vector<std::size_t> kept_beams_;   // beam skipping: the beams summed

@@ -1,6 +1,7 @@
 #include "algorithms/amcl/motion_model.hpp"
 
 #include "algorithms/amcl/standard_normal.hpp"
+#include "algorithms/geometry/sin_cos.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -73,8 +74,9 @@ void apply_differential_motion(std::span<Particle> particles, const geometry::Po
     const double noisy_rot2 = motion.rotation2 + sample_with_deviation(rot2_deviation, standard_normal, rng);
     geometry::Pose2& pose = particle.pose;
     const double heading = pose.yaw + noisy_rot1;
-    pose.x += noisy_trans * std::cos(heading);
-    pose.y += noisy_trans * std::sin(heading);
+    const geometry::SinCos direction = geometry::sin_cos(heading);
+    pose.x += noisy_trans * direction.cos;
+    pose.y += noisy_trans * direction.sin;
     pose.yaw = geometry::normalize_angle(heading + noisy_rot2);
   }
 }

@@ -20,8 +20,13 @@ PoseBinning::PoseBinning(double cell_size, double angle_size)
 
 PoseBin PoseBinning::bin_of(const geometry::Pose2& pose) const {
   int yaw_bin = static_cast<int>(std::floor((pose.yaw + std::numbers::pi) / angle_size_));
-  yaw_bin %= yaw_bin_count_;
-  if (yaw_bin < 0) yaw_bin += yaw_bin_count_;
+  // A normalized yaw lands in range (or on the count, at pi): no division.
+  if (yaw_bin == yaw_bin_count_) {
+    yaw_bin = 0;
+  } else if (yaw_bin < 0 || yaw_bin > yaw_bin_count_) {
+    yaw_bin %= yaw_bin_count_;
+    if (yaw_bin < 0) yaw_bin += yaw_bin_count_;
+  }
   return {static_cast<std::int32_t>(std::floor(pose.x / cell_size_)),
           static_cast<std::int32_t>(std::floor(pose.y / cell_size_)), yaw_bin};
 }

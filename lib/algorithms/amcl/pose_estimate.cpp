@@ -1,6 +1,9 @@
 #include "algorithms/amcl/pose_estimate.hpp"
 
+#include "algorithms/geometry/sin_cos.hpp"
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace playerkit::amcl {
@@ -12,8 +15,9 @@ Hypothesis weighted_estimate(std::span<const Particle> particles) {
     total += particle.weight;
     x += particle.weight * particle.pose.x;
     y += particle.weight * particle.pose.y;
-    c += particle.weight * std::cos(particle.pose.yaw);
-    s += particle.weight * std::sin(particle.pose.yaw);
+    const geometry::SinCos heading = geometry::sin_cos(particle.pose.yaw);
+    c += particle.weight * heading.cos;
+    s += particle.weight * heading.sin;
   }
   if (!(total > 0.0)) return estimate;
   estimate.weight = total;
@@ -102,8 +106,9 @@ void PoseClusterer::cluster(std::span<const Particle> particles, double cell_siz
     a.weight += p.weight;
     a.x += p.weight * p.pose.x;
     a.y += p.weight * p.pose.y;
-    a.cos_yaw += p.weight * std::cos(p.pose.yaw);
-    a.sin_yaw += p.weight * std::sin(p.pose.yaw);
+    const geometry::SinCos heading = geometry::sin_cos(p.pose.yaw);
+    a.cos_yaw += p.weight * heading.cos;
+    a.sin_yaw += p.weight * heading.sin;
     total += p.weight;
   }
   end_run();
@@ -123,9 +128,16 @@ void PoseClusterer::cluster(std::span<const Particle> particles, double cell_siz
     const std::uint32_t k = cluster_of_root_[find_root(particle_bin_[i])];
     const Particle& p = particles[i];
     const Hypothesis& h = out[k];
-    const Eigen::Vector3d d(p.pose.x - h.mean.x, p.pose.y - h.mean.y,
-                            geometry::angle_difference(p.pose.yaw, h.mean.yaw));
-    run_of(k).scatter += p.weight * d * d.transpose();
+    const std::array<double, 3> d{p.pose.x - h.mean.x, p.pose.y - h.mean.y,
+                                  geometry::angle_difference(p.pose.yaw, h.mean.yaw)};
+    // weight * d * d^T, element by element: as an Eigen expression the
+    // compiler built it in memory with stores the next loads could not
+    // forward from, a stall per particle.
+    Eigen::Matrix3d& scatter = run_of(k).scatter;
+    for (int row = 0; row < 3; ++row) {
+      const double weighted = p.weight * d[static_cast<std::size_t>(row)];
+      for (int col = 0; col < 3; ++col) scatter(row, col) += weighted * d[static_cast<std::size_t>(col)];
+    }
   }
   end_run();
   for (std::size_t k = 0; k < out.size(); ++k) {
