@@ -1,6 +1,7 @@
 #include "localization/offline_localizer.hpp"
 
 #include <chrono>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -37,46 +38,47 @@ LocalizationSummary localize_log(
     const std::function<void(const LocalizedScan& result, const LoggedScan& scan)>& on_scan) {
   const auto wall_start = std::chrono::steady_clock::now();
   LoggedScanReader reader(log, options.reader);
-  amcl::AmclFilter filter(options.filter, std::move(map), options.seed);
   const Eigen::Matrix3d initial_covariance = diagonal_covariance(options.initial);
+  // The filter draws its particles once, where it starts: at a pose, or over
+  // the whole map, or (first_truth) at the first scan's true pose.
+  std::optional<amcl::AmclFilter> filter;
+  const auto start_filter = [&](const std::optional<amcl::StartPose>& start) {
+    filter.emplace(options.filter, map, options.seed, start);
+  };
   switch (options.initial.kind) {
     case InitialBelief::Kind::pose:
-      filter.set_pose(options.initial.pose, initial_covariance);
+      start_filter(amcl::StartPose{options.initial.pose, initial_covariance});
       break;
     case InitialBelief::Kind::global:
-      filter.set_global();
+      start_filter(std::nullopt);
       break;
     case InitialBelief::Kind::first_truth:
       break;  // at the first scan
   }
 
   LocalizationSummary summary;
-  // Only a global start is a search: the filter also starts as one before
-  // a first_truth run sets its pose at the first scan.
-  if (options.initial.kind == InitialBelief::Kind::global) summary.global_particles = filter.particles().size();
+  if (options.initial.kind == InitialBelief::Kind::global) summary.global_particles = filter->particles().size();
   std::optional<double> first_time;
-  bool initialised = options.initial.kind != InitialBelief::Kind::first_truth;
   while (auto logged = reader.next()) {
     if (!logged->odometry) continue;  // counted by the reader
-    if (!initialised) {
+    if (!filter) {
       if (!logged->truth) {
         throw std::invalid_argument(log.string() + ": the first scan has no true pose to start from");
       }
       // The truth is the laser's pose; the filter tracks the robot's.
-      filter.set_pose(logged->truth->compose(options.laser_pose.inverse()), initial_covariance);
-      initialised = true;
+      start_filter(amcl::StartPose{logged->truth->compose(options.laser_pose.inverse()), initial_covariance});
     }
     const amcl::LaserScan scan = to_filter_scan(*logged, options.laser_pose);
     LocalizedScan result;
     result.time = logged->time;
-    result.updated = filter.update(*logged->odometry, &scan);
+    result.updated = filter->update(*logged->odometry, &scan);
     // Between updates the particles stay where they last moved: carry the
     // estimate to this scan's odometry.
-    result.estimate = filter.predict(*logged->odometry);
-    result.particles = filter.particles().size();
+    result.estimate = filter->predict(*logged->odometry);
+    result.particles = filter->particles().size();
     if (!first_time) first_time = logged->time;
     summary.log_seconds = logged->time - *first_time;
-    if (summary.global_particles > 0 && !summary.search_ended_at && !filter.searching()) {
+    if (summary.global_particles > 0 && !summary.search_ended_at && !filter->searching()) {
       summary.search_ended_at = summary.log_seconds;
     }
     ++summary.scans;

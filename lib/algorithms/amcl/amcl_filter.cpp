@@ -23,14 +23,18 @@ const AmclParameters& validated(const AmclParameters& parameters) {
 }  // namespace
 
 AmclFilter::AmclFilter(AmclParameters parameters, std::shared_ptr<const grid::OccupancyGrid> map,
-                       std::uint64_t seed)
+                       std::uint64_t seed, const std::optional<StartPose>& start)
     : parameters_(validated(parameters)),
       map_(require_nonempty_map(std::move(map))),
       rng_(seed),
       free_space_(*map_),
       recovery_(parameters_.alpha_slow, parameters_.alpha_fast) {
   if (free_space_.empty()) throw std::invalid_argument("AmclFilter: the map has no free cell");
-  set_global();
+  if (start) {
+    set_pose(start->mean, start->covariance);
+  } else {
+    set_global();
+  }
 }
 
 void AmclFilter::restart() {

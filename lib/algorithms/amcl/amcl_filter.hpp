@@ -21,19 +21,27 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <random>
 #include <span>
 #include <vector>
 
 namespace playerkit::amcl {
 
+// A pose and its uncertainty (x, y, yaw: m^2, rad^2) to start from.
+struct StartPose {
+  geometry::Pose2 mean;
+  Eigen::Matrix3d covariance;
+};
+
 class AmclFilter {
  public:
-  // Starts with a global search (set_global()). Throws
+  // Starts at `start` when given (set_pose), else with a global search
+  // (set_global()); the particles are drawn once. Throws
   // std::invalid_argument for invalid parameters or a map without free
   // cells.
   AmclFilter(AmclParameters parameters, std::shared_ptr<const grid::OccupancyGrid> map,
-             std::uint64_t seed);
+             std::uint64_t seed, const std::optional<StartPose>& start = std::nullopt);
 
   // max_particles drawn from N(mean, covariance) over (x, y, yaw).
   void set_pose(const geometry::Pose2& mean, const Eigen::Matrix3d& covariance);

@@ -49,6 +49,13 @@ std::size_t yaw_offsets(int yaw_bin_count, std::array<int, 3>& offsets) {
   return 3;
 }
 
+// yaw + offset round the circle; yaw is a bin's (in range), |offset| <= 1.
+int wrap_yaw(int yaw, int offset, int yaw_bin_count) {
+  const int wrapped = yaw + offset;
+  if (wrapped < 0) return wrapped + yaw_bin_count;
+  return wrapped >= yaw_bin_count ? wrapped - yaw_bin_count : wrapped;
+}
+
 }  // namespace
 
 std::size_t PoseBinning::neighbours(const PoseBin& bin, std::array<PoseBin, 26>& out) const {
@@ -60,8 +67,7 @@ std::size_t PoseBinning::neighbours(const PoseBin& bin, std::array<PoseBin, 26>&
       for (std::size_t k = 0; k < offset_count; ++k) {
         const int dyaw = offsets[k];
         if (dx == 0 && dy == 0 && dyaw == 0) continue;
-        const int yaw = ((bin.yaw + dyaw) % yaw_bin_count_ + yaw_bin_count_) % yaw_bin_count_;
-        out[count++] = {bin.x + dx, bin.y + dy, yaw};
+        out[count++] = {bin.x + dx, bin.y + dy, wrap_yaw(bin.yaw, dyaw, yaw_bin_count_)};
       }
     }
   }
@@ -79,8 +85,7 @@ std::size_t PoseBinning::forward_neighbours(const PoseBin& bin, std::array<PoseB
         // With (dx, dy) = (0, 0), only forward in yaw; with two yaw bins
         // the offset 1 is its own opposite and counts as forward.
         if (dx == 0 && dy == 0 && dyaw <= 0) continue;
-        const int yaw = ((bin.yaw + dyaw) % yaw_bin_count_ + yaw_bin_count_) % yaw_bin_count_;
-        out[count++] = {bin.x + dx, bin.y + dy, yaw};
+        out[count++] = {bin.x + dx, bin.y + dy, wrap_yaw(bin.yaw, dyaw, yaw_bin_count_)};
       }
     }
   }
@@ -107,19 +112,18 @@ std::size_t capacity_for(std::size_t max_bins) { return std::bit_ceil(std::max<s
 
 void BinTable::reserve(std::size_t max_bins) {
   const std::size_t capacity = capacity_for(max_bins);
-  if (capacity <= keys_.size()) return;
-  keys_.assign(capacity, 0);
-  indices_.assign(capacity, not_found);
+  if (capacity <= slots_.size()) return;
+  slots_.assign(capacity, Slot{});
   used_.clear();
   mask_ = capacity - 1;
+  shift_ = 64 - std::countr_zero(capacity);
   size_ = 0;
 }
 
 void BinTable::reset(std::size_t max_bins) {
   const std::size_t capacity = capacity_for(max_bins);
-  if (keys_.size() > 4 * capacity) {  // shrink: start afresh
-    keys_.clear();
-    indices_.clear();
+  if (slots_.size() > 4 * capacity) {  // shrink: start afresh
+    slots_.clear();
     used_.clear();
     size_ = 0;
   } else {
@@ -129,49 +133,58 @@ void BinTable::reset(std::size_t max_bins) {
 }
 
 void BinTable::clear() {
-  for (const std::uint32_t slot : used_) indices_[slot] = not_found;
+  for (const std::uint32_t slot : used_) slots_[slot].index = not_found;
   used_.clear();
   size_ = 0;
 }
 
 std::size_t BinTable::slot_of(std::uint64_t key) const {
-  // A multiplicative (Fibonacci) hash spreads neighbouring bins apart.
-  std::uint64_t h = key * 0x9e3779b97f4a7c15ull;
-  h ^= h >> 29;
-  std::size_t slot = static_cast<std::size_t>(h) & mask_;
-  while (indices_[slot] != not_found && keys_[slot] != key) slot = (slot + 1) & mask_;
+  std::size_t slot = home_slot(key);
+  while (slots_[slot].index != not_found && slots_[slot].key != key) slot = (slot + 1) & mask_;
   return slot;
 }
 
 std::pair<std::uint32_t, bool> BinTable::insert(std::uint64_t key) {
-  if (2 * (size_ + 1) > keys_.size()) {
+  if (2 * (size_ + 1) > slots_.size()) {
     // Grow (rare: only if more bins appear than reserved for) by rehashing.
-    std::vector<std::uint64_t> old_keys = std::move(keys_);
-    std::vector<std::uint32_t> old_indices = std::move(indices_);
-    keys_.clear();
-    indices_.clear();
+    const std::vector<Slot> old_slots = std::move(slots_);
+    slots_.clear();
     const std::size_t old_size = size_;
-    reserve(std::max<std::size_t>(16, old_keys.size()));
-    for (std::size_t i = 0; i < old_keys.size(); ++i) {
-      if (old_indices[i] == not_found) continue;
-      const std::size_t slot = slot_of(old_keys[i]);
-      keys_[slot] = old_keys[i];
-      indices_[slot] = old_indices[i];
+    reserve(std::max<std::size_t>(16, old_slots.size()));
+    for (const Slot& old : old_slots) {
+      if (old.index == not_found) continue;
+      const std::size_t slot = slot_of(old.key);
+      slots_[slot] = old;
       used_.push_back(static_cast<std::uint32_t>(slot));
     }
     size_ = old_size;
   }
   const std::size_t slot = slot_of(key);
-  if (indices_[slot] != not_found) return {indices_[slot], false};
-  keys_[slot] = key;
-  indices_[slot] = static_cast<std::uint32_t>(size_++);
+  Slot& found = slots_[slot];
+  if (found.index != not_found) return {found.index, false};
+  found = {key, static_cast<std::uint32_t>(size_++)};
   used_.push_back(static_cast<std::uint32_t>(slot));
-  return {indices_[slot], true};
+  return {found.index, true};
 }
 
 std::uint32_t BinTable::find(std::uint64_t key) const {
-  if (keys_.empty()) return not_found;
-  return indices_[slot_of(key)];
+  if (slots_.empty()) return not_found;
+  return slots_[slot_of(key)].index;
+}
+
+bool DenseBinGrid::reset(const PoseBin& low, const PoseBin& high, int yaw_bin_count, std::size_t max_cells) {
+  const double columns = static_cast<double>(high.x) - low.x + 1.0;
+  const double rows = static_cast<double>(high.y) - low.y + 1.0;
+  if (!(columns >= 1.0 && rows >= 1.0 && yaw_bin_count >= 1) ||
+      columns * rows * yaw_bin_count > static_cast<double>(max_cells)) {
+    return false;
+  }
+  low_ = low;
+  high_ = high;
+  rows_ = static_cast<std::size_t>(rows);
+  yaws_ = static_cast<std::size_t>(yaw_bin_count);
+  cells_.assign(static_cast<std::size_t>(columns) * rows_ * yaws_, BinTable::not_found);
+  return true;
 }
 
 }  // namespace playerkit::amcl

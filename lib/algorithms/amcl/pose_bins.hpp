@@ -62,15 +62,74 @@ class BinTable {
   std::pair<std::uint32_t, bool> insert(std::uint64_t key);
   std::uint32_t find(std::uint64_t key) const;
   std::size_t size() const { return size_; }
+  // Asks for the key's home slot to be brought into the cache: a loop over
+  // many bins waits on memory unless it asks a few keys ahead.
+  void prefetch(std::uint64_t key) const {
+    if (!slots_.empty()) __builtin_prefetch(&slots_[home_slot(key)]);
+  }
 
  private:
+  std::size_t home_slot(std::uint64_t key) const {
+    // Fibonacci hashing: the top bits of key * 2^64/phi, which every bit of
+    // the key moves. (The low bits, which an earlier version took, never
+    // saw the yaw at the top of the key: all 36 yaw bins of a cell shared a
+    // home slot, and a global search's lookups probed dozens of slots.)
+    return static_cast<std::size_t>((key * 0x9e3779b97f4a7c15ull) >> shift_);
+  }
   std::size_t slot_of(std::uint64_t key) const;
 
-  std::vector<std::uint64_t> keys_;
-  std::vector<std::uint32_t> indices_;  // not_found marks an empty slot
-  std::vector<std::uint32_t> used_;     // the slots holding a bin
+  // Key and index side by side: a probe touches one cache line, not two.
+  struct Slot {
+    std::uint64_t key = 0;
+    std::uint32_t index = not_found;  // not_found marks an empty slot
+  };
+  std::vector<Slot> slots_;
+  std::vector<std::uint32_t> used_;  // the slots holding a bin
   std::size_t mask_ = 0;
+  int shift_ = 64;  // 64 - log2(capacity)
   std::size_t size_ = 0;
+};
+
+// Bin indices in an array over the box the bins span (every yaw bin): no
+// hashing, and a bin's neighbours lie next to it in memory. For bins that
+// fill much of their box, as a global search's do; BinTable otherwise.
+class DenseBinGrid {
+ public:
+  // Sizes the grid for the cells from `low` to `high` (x and y; yaw is
+  // ignored) and empties it. False, with nothing done, when that box holds
+  // more than max_cells bins.
+  bool reset(const PoseBin& low, const PoseBin& high, int yaw_bin_count, std::size_t max_cells);
+
+  // The index stored for a bin inside the box (BinTable::not_found if none).
+  std::uint32_t& at(const PoseBin& bin) { return cells_[offset(bin)]; }
+  // Calls visit(bin, index) for every bin stored, in memory order: x, then
+  // y, then yaw.
+  template <typename Visit>
+  void for_each(Visit&& visit) const {
+    std::size_t offset = 0;
+    for (std::int32_t x = low_.x; x <= high_.x; ++x) {
+      for (std::int32_t y = low_.y; y <= high_.y; ++y) {
+        for (std::size_t yaw = 0; yaw < yaws_; ++yaw, ++offset) {
+          if (cells_[offset] != BinTable::not_found) visit(PoseBin{x, y, static_cast<std::int32_t>(yaw)}, cells_[offset]);
+        }
+      }
+    }
+  }
+  // The same, or not_found for a bin outside the box.
+  std::uint32_t find(const PoseBin& bin) const {
+    if (bin.x < low_.x || bin.x > high_.x || bin.y < low_.y || bin.y > high_.y) return BinTable::not_found;
+    return cells_[offset(bin)];
+  }
+
+ private:
+  std::size_t offset(const PoseBin& bin) const {
+    return (static_cast<std::size_t>(bin.x - low_.x) * rows_ + static_cast<std::size_t>(bin.y - low_.y)) * yaws_ +
+           static_cast<std::size_t>(bin.yaw);
+  }
+
+  PoseBin low_{}, high_{};
+  std::size_t rows_ = 0, yaws_ = 0;
+  std::vector<std::uint32_t> cells_;
 };
 
 }  // namespace playerkit::amcl

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <set>
 #include <tuple>
+#include <vector>
 
 namespace playerkit::amcl {
 namespace pose_bins_test {
@@ -131,6 +132,30 @@ TEST(PoseBinning, KeysOfDistinctNearbyBinsDiffer) {
     for (int y = -3; y <= 3; ++y)
       for (int yaw = 0; yaw < 36; ++yaw) keys.insert(PoseBinning::key({x, y, yaw}));
   EXPECT_EQ(keys.size(), 7u * 7u * 36u);
+}
+
+TEST(DenseBinGrid, HoldsIndicesOverItsBoxAndVisitsThemInMemoryOrder) {
+  DenseBinGrid grid;
+  EXPECT_FALSE(grid.reset({0, 0, 0}, {9, 9, 0}, 36, 100 * 36 - 1));  // one bin too many
+  ASSERT_TRUE(grid.reset({-2, 3, 0}, {1, 5, 0}, 4, 4 * 3 * 4));
+  EXPECT_EQ(grid.find({-2, 3, 0}), BinTable::not_found);
+  grid.at({1, 5, 3}) = 7;
+  grid.at({-2, 3, 0}) = 2;
+  grid.at({0, 4, 1}) = 5;
+  EXPECT_EQ(grid.find({1, 5, 3}), 7u);
+  EXPECT_EQ(grid.find({0, 4, 1}), 5u);
+  EXPECT_EQ(grid.find({0, 4, 2}), BinTable::not_found);
+  // Outside the box: not found, not read out of bounds.
+  EXPECT_EQ(grid.find({2, 5, 3}), BinTable::not_found);
+  EXPECT_EQ(grid.find({-3, 4, 0}), BinTable::not_found);
+  EXPECT_EQ(grid.find({0, 6, 0}), BinTable::not_found);
+  EXPECT_EQ(grid.find({0, 2, 0}), BinTable::not_found);
+  std::vector<std::tuple<int, int, int, std::uint32_t>> seen;
+  grid.for_each([&](const PoseBin& bin, std::uint32_t index) { seen.emplace_back(bin.x, bin.y, bin.yaw, index); });
+  EXPECT_EQ(seen, (std::vector<std::tuple<int, int, int, std::uint32_t>>{{-2, 3, 0, 2}, {0, 4, 1, 5}, {1, 5, 3, 7}}));
+  // A reset empties it.
+  ASSERT_TRUE(grid.reset({-2, 3, 0}, {1, 5, 0}, 4, 1000));
+  EXPECT_EQ(grid.find({1, 5, 3}), BinTable::not_found);
 }
 
 }  // namespace pose_bins_test

@@ -44,14 +44,42 @@ void PoseClusterer::cluster(std::span<const Particle> particles, double cell_siz
   out.clear();
   if (particles.empty()) return;
   const PoseBinning binning(cell_size, angle_size);
-  bins_.reset(particles.size());
   bin_coordinates_.clear();
   particle_bin_.resize(particles.size());
+  particle_pose_bin_.resize(particles.size());
+  PoseBin low = binning.bin_of(particles[0].pose), high = low;
   for (std::size_t i = 0; i < particles.size(); ++i) {
     const PoseBin bin = binning.bin_of(particles[i].pose);
-    const auto [index, is_new] = bins_.insert(PoseBinning::key(bin));
-    if (is_new) bin_coordinates_.push_back(bin);
-    particle_bin_[i] = index;
+    particle_pose_bin_[i] = bin;
+    low = {std::min(low.x, bin.x), std::min(low.y, bin.y), 0};
+    high = {std::max(high.x, bin.x), std::max(high.y, bin.y), 0};
+  }
+  // Bins numbered 0, 1, ... in the order their first particle comes, with
+  // an array over their box when they fill a fair share of it (a global
+  // search), else a hash table. Either way the same numbers.
+  const std::size_t dense_limit = std::max(kDenseGridLeast, kDenseGridPerParticle * particles.size());
+  const bool dense = dense_grid_allowed_ && grid_.reset(low, high, binning.yaw_bin_count(), dense_limit);
+  if (dense) {
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+      std::uint32_t& index = grid_.at(particle_pose_bin_[i]);
+      if (index == BinTable::not_found) {
+        index = static_cast<std::uint32_t>(bin_coordinates_.size());
+        bin_coordinates_.push_back(particle_pose_bin_[i]);
+      }
+      particle_bin_[i] = index;
+    }
+  } else {
+    // Keys first, so the table can be fetched a few particles ahead.
+    constexpr std::size_t kAhead = 8;
+    bins_.reset(particles.size());
+    particle_key_.resize(particles.size());
+    for (std::size_t i = 0; i < particles.size(); ++i) particle_key_[i] = PoseBinning::key(particle_pose_bin_[i]);
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+      if (i + kAhead < particles.size()) bins_.prefetch(particle_key_[i + kAhead]);
+      const auto [index, is_new] = bins_.insert(particle_key_[i]);
+      if (is_new) bin_coordinates_.push_back(particle_pose_bin_[i]);
+      particle_bin_[i] = index;
+    }
   }
 
   const std::size_t bin_count = bin_coordinates_.size();
@@ -59,28 +87,46 @@ void PoseClusterer::cluster(std::span<const Particle> particles, double cell_siz
   for (std::uint32_t b = 0; b < bin_count; ++b) parent_[b] = b;
   // Touching bins join: each pair is found from one side, as the other's
   // forward neighbour (half the lookups of all 26).
+  // The sets are the same whatever order the bins are visited in.
   std::array<PoseBin, 13> around;
-  for (std::uint32_t b = 0; b < bin_count; ++b) {
-    const std::size_t count = binning.forward_neighbours(bin_coordinates_[b], around);
+  const auto join_touching = [&](const PoseBin& bin, std::uint32_t b, const auto& index_of) {
+    const std::size_t count = binning.forward_neighbours(bin, around);
+    // A set's root is its lowest bin (the higher root is linked under the
+    // lower), so b's root after a join is the lower of the two.
+    std::uint32_t root = find_root(b);
     for (std::size_t k = 0; k < count; ++k) {
-      const std::uint32_t other = bins_.find(PoseBinning::key(around[k]));
+      const std::uint32_t other = index_of(around[k]);
       if (other == BinTable::not_found) continue;
-      const std::uint32_t a = find_root(b), c = find_root(other);
-      if (a != c) parent_[std::max(a, c)] = std::min(a, c);
+      const std::uint32_t other_root = find_root(other);
+      if (root == other_root) continue;
+      parent_[std::max(root, other_root)] = std::min(root, other_root);
+      root = std::min(root, other_root);
     }
+  };
+  if (dense) {
+    // In memory order, so that neighbours are looked up close to each other.
+    const auto in_grid = [&](const PoseBin& bin) { return grid_.find(bin); };
+    grid_.for_each([&](const PoseBin& bin, std::uint32_t b) { join_touching(bin, b, in_grid); });
+  } else {
+    const auto in_table = [&](const PoseBin& bin) { return bins_.find(PoseBinning::key(bin)); };
+    for (std::uint32_t b = 0; b < bin_count; ++b) join_touching(bin_coordinates_[b], b, in_table);
   }
 
   // Number clusters in order of their first bin, so results do not depend
   // on hash order.
   cluster_of_root_.assign(bin_count, BinTable::not_found);
   accumulators_.clear();
+  // A parent is a lower bin, so in rising order every parent already points
+  // at its root: one pass leaves each bin pointing at its root, and a
+  // particle's cluster is two lookups away.
   for (std::uint32_t b = 0; b < bin_count; ++b) {
-    const std::uint32_t root = find_root(b);
+    const std::uint32_t root = parent_[b] = parent_[parent_[b]];
     if (cluster_of_root_[root] == BinTable::not_found) {
       cluster_of_root_[root] = static_cast<std::uint32_t>(accumulators_.size());
       accumulators_.emplace_back();
     }
   }
+  const auto cluster_of = [&](std::size_t particle) { return cluster_of_root_[parent_[particle_bin_[particle]]]; };
   // Sums per cluster in particle order. Runs of particles share a cluster
   // (most belong to one): a run's sums stay in a local until the cluster
   // changes, where sums kept in the vector made each particle wait for the
@@ -101,7 +147,7 @@ void PoseClusterer::cluster(std::span<const Particle> particles, double cell_siz
   };
   double total = 0.0;
   for (std::size_t i = 0; i < particles.size(); ++i) {
-    Accumulator& a = run_of(cluster_of_root_[find_root(particle_bin_[i])]);
+    Accumulator& a = run_of(cluster_of(i));
     const Particle& p = particles[i];
     a.weight += p.weight;
     a.x += p.weight * p.pose.x;
@@ -125,7 +171,7 @@ void PoseClusterer::cluster(std::span<const Particle> particles, double cell_siz
     }
   }
   for (std::size_t i = 0; i < particles.size(); ++i) {
-    const std::uint32_t k = cluster_of_root_[find_root(particle_bin_[i])];
+    const std::uint32_t k = cluster_of(i);
     const Particle& p = particles[i];
     const Hypothesis& h = out[k];
     const std::array<double, 3> d{p.pose.x - h.mean.x, p.pose.y - h.mean.y,

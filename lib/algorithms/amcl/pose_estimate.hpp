@@ -35,6 +35,10 @@ class PoseClusterer {
   void cluster(std::span<const Particle> particles, double cell_size, double angle_size,
                std::vector<Hypothesis>& out);
 
+  // Off, bins always go through the hash table; the answer is the same
+  // (a test compares the two ways).
+  void use_dense_grid(bool on) { dense_grid_allowed_ = on; }
+
  private:
   std::uint32_t find_root(std::uint32_t bin);
 
@@ -43,9 +47,19 @@ class PoseClusterer {
     Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
   };
 
+  // A dense grid for bins that fill at least 1/kDenseGridPerParticle of
+  // their box (or a box this small): one global search's 77 000 particles
+  // over Freiburg 079 fill about a third of theirs.
+  static constexpr std::size_t kDenseGridPerParticle = 8;
+  static constexpr std::size_t kDenseGridLeast = 1 << 14;
+
+  bool dense_grid_allowed_ = true;
+  DenseBinGrid grid_;
   BinTable bins_;
   std::vector<PoseBin> bin_coordinates_;
   std::vector<std::uint32_t> parent_;
+  std::vector<PoseBin> particle_pose_bin_;
+  std::vector<std::uint64_t> particle_key_;
   std::vector<std::uint32_t> particle_bin_;
   std::vector<std::uint32_t> cluster_of_root_;
   std::vector<Accumulator> accumulators_;

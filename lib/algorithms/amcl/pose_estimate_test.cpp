@@ -69,6 +69,38 @@ TEST(PoseEstimate, WeightsNotCountsDecide) {
   EXPECT_NEAR(clusters[0].weight, 0.9, 1e-12);
 }
 
+// The dense grid and the hash table number bins alike, so the clusters
+// are the same to the bit: spread like a global search, in blobs, in one.
+TEST(PoseEstimate, DenseGridAndHashTableGiveTheSameClusters) {
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> across(-15.0, 15.0), along(-5.0, 5.0), heading(-pi, pi);
+  std::normal_distribution<double> noise(0.0, 0.3);
+  std::uniform_real_distribution<double> weight(0.1, 1.0);
+  for (int scene = 0; scene < 3; ++scene) {
+    std::vector<Particle> particles;
+    for (int i = 0; i < 20000; ++i) {
+      geometry::Pose2 pose{across(rng), along(rng), heading(rng)};
+      if (scene == 1) pose = {(i % 4) * 6.0 + noise(rng), (i % 3) * 2.0 + noise(rng), (i % 5) * 1.2 + noise(rng)};
+      if (scene == 2) pose = {3.0 + noise(rng), -1.0 + noise(rng), geometry::normalize_angle(3.0 + noise(rng))};
+      particles.push_back({pose, weight(rng)});
+    }
+    PoseClusterer dense, hashed;
+    hashed.use_dense_grid(false);
+    std::vector<Hypothesis> a, b;
+    dense.cluster(particles, 0.5, ten_degrees, a);
+    hashed.cluster(particles, 0.5, ten_degrees, b);
+    ASSERT_EQ(a.size(), b.size()) << "scene " << scene;
+    EXPECT_GT(a.size(), scene == 2 ? 0u : 1u) << "scene " << scene;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      EXPECT_EQ(a[k].weight, b[k].weight) << "scene " << scene << " cluster " << k;
+      EXPECT_EQ(a[k].mean.x, b[k].mean.x);
+      EXPECT_EQ(a[k].mean.y, b[k].mean.y);
+      EXPECT_EQ(a[k].mean.yaw, b[k].mean.yaw);
+      EXPECT_EQ(a[k].covariance, b[k].covariance);
+    }
+  }
+}
+
 TEST(PoseEstimate, ChainOfTouchingBinsIsOneCluster) {
   // Particles every 0.4 m along x: each bin touches the next.
   std::vector<Particle> particles;

@@ -113,8 +113,9 @@ void AmclDriver::close() {
 }
 
 void AmclDriver::start_filter() {
-  filter_ = std::make_unique<amcl::AmclFilter>(parameters_, options_.map, options_.seed);
-  if (options_.initial_pose) filter_->set_pose(options_.initial_pose->mean, options_.initial_pose->covariance);
+  std::optional<amcl::StartPose> start;
+  if (options_.initial_pose) start = amcl::StartPose{options_.initial_pose->mean, options_.initial_pose->covariance};
+  filter_ = std::make_unique<amcl::AmclFilter>(parameters_, options_.map, options_.seed, start);
   filter_moved_ = false;
   last_processed_ = {};
 }
