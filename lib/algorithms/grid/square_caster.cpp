@@ -35,42 +35,60 @@ int floor_cell(double cells) {
 
 }  // namespace
 
+namespace {
+
+// Per cell, the Chebyshev distance in cells (capped at kMostClearance) to the
+// nearest cell that stops a ray: two raster passes over the 8 neighbours
+// give it exactly. Cells off the grid count as clear (a ray leaving the grid
+// is answered max_range before it could need them): the grid is framed by a
+// border at the cap, so the passes need no bounds checks. Each pass takes a
+// row's three neighbours in the row before it first (independent cells, so
+// the compiler can take many at once), then the neighbour in the same row,
+// which only a sweep can.
+std::vector<std::uint8_t> chebyshev_clearance(const OccupancyGrid& grid, RayStop stop, std::size_t padding) {
+  const auto width = static_cast<std::size_t>(grid.width());
+  const auto height = static_cast<std::size_t>(grid.height());
+  const std::size_t stride = width + 2;
+  std::vector<std::uint8_t> framed(stride * (height + 2), kMostClearance);
+  for (std::size_t row = 0; row < height; ++row) {
+    std::uint8_t* cells = &framed[(row + 1) * stride + 1];
+    for (std::size_t col = 0; col < width; ++col) {
+      if (square_caster_stops(grid.at(static_cast<int>(col), static_cast<int>(row)), stop)) cells[col] = 0;
+    }
+  }
+  // A cell never rises above its value (at most the cap), so "neighbour + 1"
+  // needs no saturation: the minimum with the cell stays in a byte.
+  const auto take_row = [&](std::uint8_t* cells, const std::uint8_t* beside) {
+    for (std::size_t col = 1; col <= width; ++col) {
+      const int nearest = std::min({beside[col - 1], beside[col], beside[col + 1]});
+      cells[col] = static_cast<std::uint8_t>(std::min<int>(cells[col], nearest + 1));
+    }
+  };
+  for (std::size_t row = 1; row <= height; ++row) {
+    std::uint8_t* cells = &framed[row * stride];
+    take_row(cells, cells - stride);
+    int run = kMostClearance;  // the frame
+    for (std::size_t col = 1; col <= width; ++col) cells[col] = static_cast<std::uint8_t>(run = std::min<int>(cells[col], run + 1));
+  }
+  for (std::size_t row = height; row >= 1; --row) {
+    std::uint8_t* cells = &framed[row * stride];
+    take_row(cells, cells + stride);
+    int run = kMostClearance;
+    for (std::size_t col = width; col >= 1; --col) cells[col] = static_cast<std::uint8_t>(run = std::min<int>(cells[col], run + 1));
+  }
+  std::vector<std::uint8_t> clearance(width * height + padding, kMostClearance);
+  for (std::size_t row = 0; row < height; ++row) {
+    std::copy_n(&framed[(row + 1) * stride + 1], width, &clearance[row * width]);
+  }
+  return clearance;
+}
+
+}  // namespace
+
 SquareCaster::SquareCaster(const OccupancyGrid& grid, RayStop stop)
     : stop_(stop), width_(grid.width()), height_(grid.height()), resolution_(grid.resolution()), origin_(grid.origin()) {
   if (grid.empty()) return;
-  const auto at = [this](int col, int row) -> std::uint8_t& {
-    return clearance_[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(col)];
-  };
-  clearance_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) + kReadPadding, kMostClearance);
-  for (int row = 0; row < height_; ++row) {
-    for (int col = 0; col < width_; ++col) {
-      if (square_caster_stops(grid.at(col, row), stop)) at(col, row) = 0;
-    }
-  }
-  // Chebyshev distances: two raster passes over the 8 neighbours give them
-  // exactly. Cells off the grid count as clear (a ray leaving the grid is
-  // answered max_range before it could need them).
-  const auto relax = [&](int col, int row, int from_col, int from_row) {
-    if (from_col < 0 || from_row < 0 || from_col >= width_ || from_row >= height_) return;
-    std::uint8_t& cell = at(col, row);
-    cell = static_cast<std::uint8_t>(std::min<int>(cell, at(from_col, from_row) + 1));
-  };
-  for (int row = 0; row < height_; ++row) {
-    for (int col = 0; col < width_; ++col) {
-      relax(col, row, col - 1, row);
-      relax(col, row, col - 1, row - 1);
-      relax(col, row, col, row - 1);
-      relax(col, row, col + 1, row - 1);
-    }
-  }
-  for (int row = height_ - 1; row >= 0; --row) {
-    for (int col = width_ - 1; col >= 0; --col) {
-      relax(col, row, col + 1, row);
-      relax(col, row, col + 1, row + 1);
-      relax(col, row, col, row + 1);
-      relax(col, row, col - 1, row + 1);
-    }
-  }
+  clearance_ = chebyshev_clearance(grid, stop, kReadPadding);
 }
 
 SquareCaster::Start SquareCaster::start(Walk& walk, const Ray& ray) const {

@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <random>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -375,6 +376,36 @@ TEST(SquareCaster, AFanAnswersAsItsRaysDo) {
   const SquareCaster caster(grid, RayStop::occupied);
   std::vector<double> too_few(1);
   EXPECT_THROW(caster.fan_ranges({0.0, 0.0}, std::vector<Eigen::Vector2d>(2), 1.0, too_few), std::invalid_argument);
+}
+
+// clear_around reads the Chebyshev clearance the constructor computes: here
+// against brute force, cell by cell, on random grids (both stop rules, and
+// a grid wider than the 255-cell cap).
+TEST(SquareCaster, ClearAroundIsTheChebyshevDistanceToTheNearestStoppingCell) {
+  std::mt19937 random(9);
+  for (const auto& [width, height, blobs] : {std::tuple{40, 30, 12}, std::tuple{300, 7, 2}, std::tuple{1, 1, 0}}) {
+    OccupancyGrid grid(width, height, 0.1, {-1.0, 2.0}, CellState::free);
+    std::uniform_int_distribution<int> col(0, width - 1), row(0, height - 1), kind(0, 2);
+    for (int b = 0; b < blobs; ++b) grid.set(col(random), row(random), kind(random) == 0 ? CellState::unknown : CellState::occupied);
+    for (const RayStop stop : {RayStop::occupied, RayStop::occupied_or_unknown}) {
+      const SquareCaster caster(grid, stop);
+      for (int r = 0; r < height; ++r) {
+        for (int c = 0; c < width; ++c) {
+          int nearest = 255;
+          for (int r2 = 0; r2 < height; ++r2) {
+            for (int c2 = 0; c2 < width; ++c2) {
+              const CellState state = grid.at(c2, r2);
+              const bool stops = state == CellState::occupied || (stop == RayStop::occupied_or_unknown && state == CellState::unknown);
+              if (stops) nearest = std::min(nearest, std::max(std::abs(c2 - c), std::abs(r2 - r)));
+            }
+          }
+          const Eigen::Vector2d centre = grid.origin() + Eigen::Vector2d(c + 0.5, r + 0.5) * grid.resolution();
+          const double expected = nearest == 0 ? 0.0 : (nearest - 1) * grid.resolution();
+          ASSERT_DOUBLE_EQ(caster.clear_around(centre), expected) << width << "x" << height << " cell " << c << "," << r;
+        }
+      }
+    }
+  }
 }
 
 }  // namespace square_caster_test
