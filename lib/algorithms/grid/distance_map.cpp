@@ -116,19 +116,41 @@ DistanceMap::DistanceMap(const OccupancyGrid& grid, double max_distance, Distanc
     }
   }
 
-  distances_.resize(w * h);
+  // Along a row only the cells below the cap matter, and only within the
+  // cap of them: a cell farther than that from every one stays at the cap,
+  // and parabolas that far apart cannot meet below it. So the row pass runs
+  // on stretches around the cells below the cap (split where two of them are
+  // more than twice the cap apart), and the rest of the row is the cap. In
+  // a large map most of every row is open hall or unmapped outside.
+  const float max_distance_f = static_cast<float>(max_distance_);
+  const auto to_metres = [&](double squared_cells) {
+    return std::min(static_cast<float>(std::sqrt(squared_cells) * resolution_), max_distance_f);
+  };
+  const double cap_squared = double(cap) * cap;
+  distances_.assign(w * h, to_metres(cap_squared));
   LowerEnvelope envelope(width_);
   std::vector<double> squared(w);
-  const float max_distance_f = static_cast<float>(max_distance_);
+  const auto reach = static_cast<std::size_t>(cap);
   for (std::size_t row = 0; row < h; ++row) {
-    for (std::size_t col = 0; col < w; ++col) {
-      const double d = column_distance[row * w + col];
-      squared[col] = d * d;
-    }
-    envelope.transform(squared);
-    for (std::size_t col = 0; col < w; ++col) {
-      const double metres = std::sqrt(squared[col]) * resolution_;
-      distances_[row * w + col] = std::min(static_cast<float>(metres), max_distance_f);
+    const std::int32_t* distance = &column_distance[row * w];
+    float* out = &distances_[row * w];
+    std::size_t col = 0;
+    while (true) {
+      while (col < w && distance[col] >= cap) ++col;
+      if (col == w) break;
+      const std::size_t begin = col > reach ? col - reach : 0;
+      std::size_t last = col;  // the last cell below the cap in this stretch
+      for (++col; col < w && col - last <= 2 * reach; ++col) {
+        if (distance[col] < cap) last = col;
+      }
+      const std::size_t end = std::min(w, last + reach + 1);
+      const std::span<double> stretch(squared.data(), end - begin);
+      for (std::size_t c = begin; c < end; ++c) {
+        const double d = distance[c];
+        stretch[c - begin] = d * d;
+      }
+      envelope.transform(stretch);
+      for (std::size_t c = begin; c < end; ++c) out[c] = to_metres(stretch[c - begin]);
     }
   }
 }

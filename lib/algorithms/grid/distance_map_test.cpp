@@ -68,6 +68,36 @@ TEST(DistanceMap, MatchesBruteForceOnRandomGrids) {
   }
 }
 
+// With a small cap most of a sparse row is out of reach: the row pass runs
+// only on stretches around the cells near a source, split where those lie
+// far apart. Against brute force, with stretches at the row's ends, apart
+// by exactly and by just over twice the cap.
+TEST(DistanceMap, MatchesBruteForceWhenTheCapSplitsRows) {
+  for (unsigned seed = 1; seed <= 4; ++seed) {
+    const OccupancyGrid grid = random_grid(230, 30, 0.004, seed);
+    for (const double max_distance : {0.05, 0.3, 0.55, 1.2}) {
+      const DistanceMap map(grid, max_distance);
+      for (int row = 0; row < grid.height(); ++row) {
+        for (int col = 0; col < grid.width(); ++col) {
+          ASSERT_EQ(map.at(col, row), as_stored(brute_force_distance(grid, col, row, max_distance)))
+              << "seed " << seed << " cap " << max_distance << " at " << col << "," << row;
+        }
+      }
+    }
+  }
+  // Two obstacles in one row, at gaps around twice the cap (7 cells at 0.55 m).
+  for (int gap = 10; gap <= 18; ++gap) {
+    OccupancyGrid grid(60, 1, 0.1, {0.0, 0.0}, CellState::free);
+    grid.set(0, 0, CellState::occupied);
+    grid.set(gap, 0, CellState::occupied);
+    grid.set(59, 0, CellState::occupied);
+    const DistanceMap map(grid, 0.55);
+    for (int col = 0; col < 60; ++col) {
+      ASSERT_EQ(map.at(col, 0), as_stored(brute_force_distance(grid, col, 0, 0.55))) << "gap " << gap << " col " << col;
+    }
+  }
+}
+
 TEST(DistanceMap, UnknownCellsAreSourcesOnlyWhenAsked) {
   // Mostly free with a few obstacles and a few unknown cells, so the two
   // modes give different answers almost everywhere.
