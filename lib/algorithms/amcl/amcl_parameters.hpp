@@ -63,7 +63,10 @@ struct AmclParameters {
   // These defaults still allow ~45% error on a turn and ~30% on a distance,
   // ample for uncalibrated wheel odometry, but only ~5 degrees of heading
   // and ~5 cm of position per 0.2 m step or 30 degree turn from the cross
-  // terms.
+  // terms. A move longer than two update_min_distance (or update_min_angle)
+  // counts as so many moves of two: its variance grows with its
+  // length, not its square (motion_model.hpp), so a log that keeps a scan
+  // every few metres is not spread wider than one that keeps many.
   MotionModelType motion_model = MotionModelType::differential;  // ROS: odom_model_type
   double rotation_noise_from_rotation = 0.2;         // alpha1, ROS: odom_alpha1 (rad^2/rad^2)
   double rotation_noise_from_translation = 0.02;     // alpha2, ROS: odom_alpha2 (rad^2/m^2)

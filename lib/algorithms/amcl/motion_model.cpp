@@ -24,7 +24,13 @@ double sample_with_deviation(double deviation, const StandardNormal& standard_no
 MotionNoise MotionNoise::from(const AmclParameters& p) {
   return {p.rotation_noise_from_rotation, p.rotation_noise_from_translation,
           p.translation_noise_from_translation, p.translation_noise_from_rotation,
-          p.strafe_noise_from_translation};
+          p.strafe_noise_from_translation, p.update_min_distance, p.update_min_angle};
+}
+
+double noise_square(double x, double step) {
+  const double magnitude = std::abs(x);
+  const double longest = kStepsAsOneMove * step;
+  return step > 0.0 && magnitude > longest ? magnitude * longest : magnitude * magnitude;
 }
 
 DifferentialMotion decompose_differential(const geometry::Pose2& odometry_from,
@@ -55,13 +61,13 @@ void apply_differential_motion(std::span<Particle> particles, const geometry::Po
   const double rot1 = has_direction ? motion.rotation1 : 0.0;
   const double rot2 = has_direction ? motion.rotation2
                                     : geometry::normalize_angle(motion.rotation1 + motion.rotation2);
-  const double trans2 = motion.translation * motion.translation;
-  const double rot1_variance =
-      noise.rotation_from_rotation * rot1 * rot1 + noise.rotation_from_translation * trans2;
+  const double trans2 = noise_square(motion.translation, noise.translation_step);
+  const double rot1_square = noise_square(rot1, noise.rotation_step);
+  const double rot2_square = noise_square(rot2, noise.rotation_step);
+  const double rot1_variance = noise.rotation_from_rotation * rot1_square + noise.rotation_from_translation * trans2;
   const double trans_variance = noise.translation_from_translation * trans2 +
-                                noise.translation_from_rotation * (rot1 * rot1 + rot2 * rot2);
-  const double rot2_variance =
-      noise.rotation_from_rotation * rot2 * rot2 + noise.rotation_from_translation * trans2;
+                                noise.translation_from_rotation * (rot1_square + rot2_square);
+  const double rot2_variance = noise.rotation_from_rotation * rot2_square + noise.rotation_from_translation * trans2;
 
   const double rot1_deviation = deviation_of(rot1_variance);
   const double trans_deviation = deviation_of(trans_variance);
@@ -92,12 +98,11 @@ void apply_omni_motion(std::span<Particle> particles, const geometry::Pose2& odo
   const Eigen::Vector2d along =
       trans > 0.0 ? Eigen::Vector2d(delta.x / trans, delta.y / trans) : Eigen::Vector2d(1.0, 0.0);
   const Eigen::Vector2d across(-along.y(), along.x());
-  const double along_sd = std::sqrt(noise.translation_from_translation * trans * trans +
-                                    noise.translation_from_rotation * rot * rot);
-  const double across_sd = std::sqrt(noise.strafe_from_translation * trans * trans +
-                                     noise.translation_from_rotation * rot * rot);
-  const double rot_sd = std::sqrt(noise.rotation_from_rotation * rot * rot +
-                                  noise.rotation_from_translation * trans * trans);
+  const double trans2 = noise_square(trans, noise.translation_step);
+  const double rot2 = noise_square(rot, noise.rotation_step);
+  const double along_sd = std::sqrt(noise.translation_from_translation * trans2 + noise.translation_from_rotation * rot2);
+  const double across_sd = std::sqrt(noise.strafe_from_translation * trans2 + noise.translation_from_rotation * rot2);
+  const double rot_sd = std::sqrt(noise.rotation_from_rotation * rot2 + noise.rotation_from_translation * trans2);
 
   const StandardNormal standard_normal;
   for (Particle& particle : particles) {

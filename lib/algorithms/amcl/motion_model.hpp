@@ -8,6 +8,8 @@
 //   var(rot1)  = a1 rot1^2 + a2 trans^2
 //   var(trans) = a3 trans^2 + a4 (rot1^2 + rot2^2)
 //   var(rot2)  = a1 rot2^2 + a2 trans^2
+// where for moves longer than two of MotionNoise's steps x^2 becomes
+// |x| * 2 step (noise_square).
 // Unlike the textbook (and Player 1.5), driving backwards is read as a
 // reversed translation, not as "turn around by pi, drive, turn back", which
 // would otherwise add a full rotation's noise to every reversing step.
@@ -33,9 +35,26 @@ struct MotionNoise {
   double translation_from_translation = 0.0;  // a3
   double translation_from_rotation = 0.0;     // a4
   double strafe_from_translation = 0.0;       // a5 (omni)
+  // The filter's update distance and angle; 0: none. A move longer than
+  // two of them counts as so many moves of two, whose errors add up: its
+  // variance grows with its length, not with its square (noise_square). The
+  // textbook's square assumes an update every step or so; a log with a scan
+  // every 2 m spread the particles sqrt(5) times wider than the same path
+  // in 0.4 m moves.
+  double translation_step = 0.0;  // m
+  double rotation_step = 0.0;     // rad
 
   static MotionNoise from(const AmclParameters& parameters);
 };
+
+// A filter updates once the robot has moved a step, and scans come at
+// their own pace: a move between updates is normally up to about two steps,
+// the range the coefficients were set for. Beyond it, a move counts as so
+// many moves of two steps.
+inline constexpr double kStepsAsOneMove = 2.0;
+
+// x^2, or |x| * kStepsAsOneMove * step beyond that many steps (step > 0).
+double noise_square(double x, double step);
 
 // The differential-drive decomposition of an odometry delta.
 struct DifferentialMotion {

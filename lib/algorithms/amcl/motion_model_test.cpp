@@ -146,6 +146,40 @@ TEST(MotionModel, NoiseCoefficientsComeFromTheNamedParameters) {
   EXPECT_EQ(n.translation_from_translation, 3);
   EXPECT_EQ(n.translation_from_rotation, 4);
   EXPECT_EQ(n.strafe_from_translation, 5);
+  EXPECT_EQ(n.translation_step, p.update_min_distance);
+  EXPECT_EQ(n.rotation_step, p.update_min_angle);
+}
+
+TEST(MotionModel, AMoveOfManyStepsAddsTheirVariancesNotTheSquareOfItsLength) {
+  // Up to two steps the textbook's square; beyond, |x| * two steps: the
+  // variance grows with the length, and meets the square at two steps.
+  EXPECT_DOUBLE_EQ(noise_square(0.3, 0.2), 0.09);
+  EXPECT_DOUBLE_EQ(noise_square(-0.4, 0.2), 0.16);
+  EXPECT_DOUBLE_EQ(noise_square(2.0, 0.2), 0.8);
+  EXPECT_DOUBLE_EQ(noise_square(-2.0, 0.2), 0.8);
+  EXPECT_DOUBLE_EQ(noise_square(2.0, 0.0), 4.0);  // no step: the textbook
+  EXPECT_NEAR(noise_square(0.4 + 1e-9, 0.2), 0.16, 1e-9);  // continuous
+
+  // A 4 m drive with a3 = 0.1 and a 0.2 m step: var(trans) = 0.1 * 4 * 0.4,
+  // sd 0.4 m (the textbook: 0.1 * 16, sd 1.26 m).
+  MotionNoise noise;
+  noise.translation_from_translation = 0.1;
+  noise.translation_step = 0.2;
+  noise.rotation_step = 0.5;
+  std::mt19937_64 rng(5);
+  std::vector<Particle> particles = copies({0, 0, 0}, 40000);
+  apply_differential_motion(particles, {0, 0, 0}, {4, 0, 0}, noise, rng);
+  const Hypothesis e = weighted_estimate(particles);
+  EXPECT_NEAR(e.mean.x, 4.0, 0.01);
+  EXPECT_NEAR(e.covariance(0, 0), 0.16, 0.16 * 0.05);
+  // And a 2 rad turn with a1 = 0.05: rot1 is 0 here, rot2 = 2 rad, beyond
+  // two 0.5 rad steps: var = 0.05 * 2 * 1.
+  MotionNoise turning;
+  turning.rotation_from_rotation = 0.05;
+  turning.rotation_step = 0.5;
+  particles = copies({0, 0, 0}, 40000);
+  apply_differential_motion(particles, {0, 0, 0}, {0, 0, 2.0}, turning, rng);
+  EXPECT_NEAR(weighted_estimate(particles).covariance(2, 2), 0.1, 0.1 * 0.05);
 }
 
 }  // namespace motion_model_test
