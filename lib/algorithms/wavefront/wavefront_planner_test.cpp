@@ -27,6 +27,18 @@ void fill(OccupancyGrid& grid, int col0, int row0, int col1, int row1, CellState
   }
 }
 
+// A free room with `blobs` rectangles of up to (largest + 1) cells a side at
+// random, one in four unknown, the rest occupied.
+OccupancyGrid cluttered_room(std::mt19937& random, int width, int height, int blobs, int largest) {
+  OccupancyGrid grid = free_room(width, height);
+  std::uniform_int_distribution<int> col(0, width - 1), row(0, height - 1), size(0, largest), kind(0, 3);
+  for (int blob = 0; blob < blobs; ++blob) {
+    const int c = col(random), r = row(random);
+    fill(grid, c, r, c + size(random), r + size(random), kind(random) == 0 ? CellState::unknown : CellState::occupied);
+  }
+  return grid;
+}
+
 // Independent of the planner: distance from a point to every occupied or
 // unknown square, by brute force (the map's edge is not counted here).
 double distance_to_cells(const OccupancyGrid& grid, const Eigen::Vector2d& p) {
@@ -243,12 +255,7 @@ TEST(WavefrontPlanner, EveryPathKeepsTheClearanceOnClutteredMaps) {
   std::mt19937 random(5);
   int found = 0, refused = 0;
   for (int map = 0; map < 4; ++map) {
-    OccupancyGrid grid = free_room(70, 50);
-    std::uniform_int_distribution<int> col(0, 69), row(0, 49), size(0, 4), kind(0, 3);
-    for (int blob = 0; blob < 25; ++blob) {
-      const int c = col(random), r = row(random);
-      fill(grid, c, r, c + size(random), r + size(random), kind(random) == 0 ? CellState::unknown : CellState::occupied);
-    }
+    const OccupancyGrid grid = cluttered_room(random, 70, 50, 25, 4);
     PlannerParameters parameters;
     parameters.robot_radius = 0.12 + 0.04 * map;
     parameters.safety_distance = 0.05;
@@ -278,12 +285,7 @@ TEST(WavefrontPlanner, SteeringTowardTheStartKeepsTheLeastCost) {
   std::mt19937 random(11);
   int compared = 0, fewer = 0;
   for (int map = 0; map < 4; ++map) {
-    OccupancyGrid grid = free_room(90, 70);
-    std::uniform_int_distribution<int> col(0, 89), row(0, 69), size(0, 6), kind(0, 3);
-    for (int blob = 0; blob < 45; ++blob) {
-      const int c = col(random), r = row(random);
-      fill(grid, c, r, c + size(random), r + size(random), kind(random) == 0 ? CellState::unknown : CellState::occupied);
-    }
+    const OccupancyGrid grid = cluttered_room(random, 90, 70, 45, 6);
     PlannerParameters parameters;
     parameters.robot_radius = 0.1 + 0.03 * map;
     parameters.safety_distance = 0.05;
