@@ -47,9 +47,9 @@ class PoseClusterer {
     Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
   };
 
-  // A dense grid for bins that fill at least 1/kDenseGridPerParticle of
-  // their box (or a box this small): one global search's 77 000 particles
-  // over Freiburg 079 fill about a third of theirs.
+  // A dense grid when the bins' box holds at most kDenseGridPerParticle
+  // bins per particle (or kDenseGridLeast bins): a global search's
+  // particles, spread over the free space, and a tracked cloud both fit.
   static constexpr std::size_t kDenseGridPerParticle = 8;
   static constexpr std::size_t kDenseGridLeast = 1 << 14;
 
