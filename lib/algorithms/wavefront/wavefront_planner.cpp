@@ -256,7 +256,13 @@ PlanResult WavefrontPlanner::plan(const Eigen::Vector2d& start, const Eigen::Vec
   const auto stride = static_cast<std::uint32_t>(stride_);
   std::array<float, kLevelMask + 1> step_weight = step_weight_;
   std::size_t queued = 0;
-  std::size_t level = 0;
+  const auto goal_estimate = [&](const Connection& c) {
+    return static_cast<float>(c.cost) +
+           remaining(static_cast<int>(c.cell % stride), static_cast<int>(c.cell / stride));
+  };
+  // The first bucket: the least estimate (buckets are a ring).
+  std::size_t level = std::numeric_limits<std::size_t>::max();
+  for (const Connection& c : goal_cells) level = std::min(level, static_cast<std::size_t>(goal_estimate(c)));
   for (auto& bucket : buckets_) bucket.clear();
   // Bucketed by the estimate of the whole way (cost so far plus the bound on
   // the rest). Rounding may put an estimate a hair below the bucket being
@@ -267,13 +273,6 @@ PlanResult WavefrontPlanner::plan(const Eigen::Vector2d& start, const Eigen::Vec
     ++queued;
   };
   const auto current = [&](const Cell& cell) { return (cell.bits >> kGenerationShift) == generation; };
-  const auto goal_estimate = [&](const Connection& c) {
-    return static_cast<float>(c.cost) +
-           remaining(static_cast<int>(c.cell % stride), static_cast<int>(c.cell / stride));
-  };
-  // The first bucket: the least estimate (buckets are a ring).
-  level = std::numeric_limits<std::size_t>::max();
-  for (const Connection& c : goal_cells) level = std::min(level, static_cast<std::size_t>(goal_estimate(c)));
   for (const Connection& c : goal_cells) {
     const auto cost = static_cast<float>(c.cost);
     Cell& cell = cells[c.cell];
