@@ -62,8 +62,11 @@ LocalizationSummary localize_log(
   while (auto logged = reader.next()) {
     if (!logged->odometry) continue;  // counted by the reader
     if (!filter) {
+      // A recorder may keep a scan or two before the truth device's first
+      // sample: the run starts at the first scan that has one.
       if (!logged->truth) {
-        throw std::invalid_argument(log.string() + ": the first scan has no true pose to start from");
+        ++summary.scans_before_truth;
+        continue;
       }
       // The truth is the laser's pose; the filter tracks the robot's.
       start_filter(amcl::StartPose{logged->truth->compose(options.laser_pose.inverse()), initial_covariance});
@@ -84,6 +87,9 @@ LocalizationSummary localize_log(
     ++summary.scans;
     if (result.updated) ++summary.laser_updates;
     on_scan(result, *logged);
+  }
+  if (!filter) {
+    throw std::invalid_argument(log.string() + ": no scan with odometry has a true pose to start from");
   }
   summary.scans_without_odometry = reader.scans_without_odometry();
   summary.synthetic_times = reader.clock().synthetic();

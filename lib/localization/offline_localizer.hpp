@@ -48,6 +48,7 @@ struct LocalizationSummary {
   std::size_t scans = 0;
   std::size_t laser_updates = 0;
   std::size_t scans_without_odometry = 0;  // skipped: nothing to move the filter
+  std::size_t scans_before_truth = 0;      // first_truth: skipped until a scan had a true pose
   double log_seconds = 0;                  // last scan time - first scan time
   bool synthetic_times = false;            // the log had no usable times: log_seconds is file order
   double wall_seconds = 0;
@@ -58,10 +59,11 @@ struct LocalizationSummary {
   [[nodiscard]] double real_time_factor() const { return wall_seconds > 0 ? log_seconds / wall_seconds : 0; }
 };
 
-// Calls `on_scan` for every scan with odometry, in log order; `scan` is the
-// logged one (for plots: its end points at the estimate). Throws
-// std::runtime_error for an unreadable log, std::invalid_argument for an
-// initial belief the log cannot give (first_truth without truth lines).
+// Calls `on_scan` for every scan with odometry, in log order, from the first
+// one with a true pose for first_truth; `scan` is the logged one (for plots:
+// its end points at the estimate). Throws std::runtime_error for an
+// unreadable log, std::invalid_argument for an initial belief the log cannot
+// give (first_truth and no scan with odometry has a true pose).
 LocalizationSummary localize_log(
     const std::filesystem::path& log, std::shared_ptr<const grid::OccupancyGrid> map,
     const OfflineLocalizationOptions& options,

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "localization/estimate_writer.hpp"
@@ -100,6 +102,56 @@ TEST_F(IntelFixture, AStartPoseFarFromTheTruthIsNotHiddenByTheOutput) {
   const auto rows = run(options);
   ASSERT_FALSE(rows.empty());
   EXPECT_GT(std::hypot(rows.front().estimate.mean.x - 0.6, rows.front().estimate.mean.y), 5.0);
+}
+
+// A recording that kept a laser scan before the truth device's first sample
+// (player-log record subscribes to each device in turn).
+constexpr const char* kTruthAfterTheFirstScan =
+    "## Player version 1.5 \n"
+    "## File version 0.0.0 \n"
+    "0000000010.000 robot 6665 position 00 0000000010.000 +01.000 +02.000 +0.500 +00.000 +00.000 +00.000 0\n"
+    "0000000010.050 robot 6665 laser 00 0000000010.050 -1.5708 +1.5708 +1.5708 0003 1.000  0 2.000  0 3.000  0 \n"
+    "0000000010.100 robot 6665 position 00 0000000010.100 +01.100 +02.000 +0.600 +00.000 +00.000 +00.000 0\n"
+    "0000000010.150 robot 6665 laser 00 0000000010.150 -1.5708 +1.5708 +1.5708 0003 4.000  0 5.000  0 6.000  0 \n"
+    "0000000010.160 robot 6665 truth 00 0000000010.150 +05.000 +06.000 +0.700\n"
+    "0000000010.170 robot 6665 position 00 0000000010.150 +01.200 +02.000 +0.650 +00.000 +00.000 +00.000 0\n"
+    "0000000010.250 robot 6665 laser 00 0000000010.250 -1.5708 +1.5708 +1.5708 0003 7.000  0 8.000  0 9.000  0 \n";
+
+std::shared_ptr<const grid::OccupancyGrid> free_room() {
+  return std::make_shared<const grid::OccupancyGrid>(200, 200, 0.05, Eigen::Vector2d::Zero(), grid::CellState::free);
+}
+
+TEST(LocalizeLog, StartingAtTheTruthSkipsTheScansBeforeTheFirstTruePose) {
+  testing::TemporaryDirectory directory;
+  OfflineLocalizationOptions options;
+  options.initial.kind = InitialBelief::Kind::first_truth;
+  std::vector<LocalizedScan> rows;
+  const auto summary = localize_log(directory.write("robot.log", kTruthAfterTheFirstScan), free_room(), options,
+                                    [&](const LocalizedScan& row, const LoggedScan&) { rows.push_back(row); });
+  EXPECT_EQ(summary.scans_before_truth, 1u);
+  EXPECT_EQ(summary.scans, 2u);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_DOUBLE_EQ(rows[0].time, 10.15);
+  // Started at the truth (5, 6, 0.7), not at the odometry (1.2, 2, 0.65).
+  EXPECT_NEAR(rows[0].estimate.mean.x, 5.0, 0.05);
+  EXPECT_NEAR(rows[0].estimate.mean.y, 6.0, 0.05);
+  EXPECT_NEAR(rows[0].estimate.mean.yaw, 0.7, 0.03);
+}
+
+TEST(LocalizeLog, StartingAtTheTruthOfALogWithoutTruthIsAClearError) {
+  testing::TemporaryDirectory directory;
+  std::string without_truth = kTruthAfterTheFirstScan;
+  without_truth.erase(without_truth.find("0000000010.160"), without_truth.find("0000000010.170") -
+                                                                without_truth.find("0000000010.160"));
+  OfflineLocalizationOptions options;
+  options.initial.kind = InitialBelief::Kind::first_truth;
+  const auto log = directory.write("robot.log", without_truth);
+  try {
+    localize_log(log, free_room(), options, [](const LocalizedScan&, const LoggedScan&) {});
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_EQ(std::string(error.what()), log.string() + ": no scan with odometry has a true pose to start from");
+  }
 }
 
 TEST(EstimateWriter, CsvHasTheDocumentedHeaderAndUnits) {

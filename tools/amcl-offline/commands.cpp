@@ -109,6 +109,10 @@ int run_localize(const LocalizeOptions& options, std::ostream& out, std::ostream
     err << ", " << std::setprecision(1) << summary.log_seconds << " s of log: " << std::setprecision(0)
         << summary.real_time_factor() << "x real time\n";
   }
+  if (summary.scans_before_truth > 0) {
+    err << "amcl-offline: warning: the first " << summary.scans_before_truth
+        << " scans had no true pose yet: started at the first that had one\n";
+  }
   if (summary.scans_without_odometry > 0) {
     err << "amcl-offline: warning: " << summary.scans_without_odometry << " scans without odometry were skipped\n";
   }

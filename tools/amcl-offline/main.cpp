@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
   localize_app->add_option("--scale", localize.scale, "metres per pixel of a map image");
   localize_app->add_flag("--negate", localize.negate, "map image: white is occupied");
   localize_app->add_option("--origin", localize.origin, "X,Y: where a map image's bottom-left corner lies (default: centred)");
-  localize_app->add_option("--init-pose", localize.init_pose, "X,Y,YAW_DEG, or 'truth' (the log's first true pose)");
+  localize_app->add_option("--init-pose", localize.init_pose, "X,Y,YAW_DEG, or 'truth' (the first true pose; scans before it are skipped)");
   localize_app->add_option("--init-var", localize.init_var, "standard deviations SX,SY,SYAW_DEG (default 0.1,0.1,3)");
   localize_app->add_flag("--global", localize.global,
                          "start anywhere in the free space: a search with 200 particles per m^2 of it");
