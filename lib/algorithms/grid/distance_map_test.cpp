@@ -6,25 +6,43 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <vector>
 
 namespace playerkit::grid {
 namespace distance_map_test {
 
-// The definition, O(cells x obstacles).
-double brute_force_distance(const OccupancyGrid& grid, int col, int row, double max_distance,
-                            DistanceTo sources = DistanceTo::occupied) {
-  double best_squared = std::numeric_limits<double>::infinity();
-  for (int r = 0; r < grid.height(); ++r) {
-    for (int c = 0; c < grid.width(); ++c) {
-      const CellState state = grid.at(c, r);
-      const bool source = sources == DistanceTo::occupied ? state == CellState::occupied
-                                                          : state != CellState::free;
-      if (!source) continue;
-      const double dc = c - col, dr = r - row;
-      best_squared = std::min(best_squared, dc * dc + dr * dr);
+struct Cell {
+  int col, row;
+};
+
+// The cells distances are measured to.
+std::vector<Cell> source_cells(const OccupancyGrid& grid, DistanceTo sources = DistanceTo::occupied) {
+  std::vector<Cell> cells;
+  for (int row = 0; row < grid.height(); ++row) {
+    for (int col = 0; col < grid.width(); ++col) {
+      const CellState state = grid.at(col, row);
+      if (sources == DistanceTo::occupied ? state == CellState::occupied : state != CellState::free) {
+        cells.push_back({col, row});
+      }
     }
   }
-  return std::min(std::sqrt(best_squared) * grid.resolution(), max_distance);
+  return cells;
+}
+
+// The definition, O(sources) a cell.
+double brute_force_distance(const std::vector<Cell>& sources, double resolution, int col, int row,
+                            double max_distance) {
+  double best_squared = std::numeric_limits<double>::infinity();
+  for (const Cell& source : sources) {
+    const double dc = source.col - col, dr = source.row - row;
+    best_squared = std::min(best_squared, dc * dc + dr * dr);
+  }
+  return std::min(std::sqrt(best_squared) * resolution, max_distance);
+}
+
+double brute_force_distance(const OccupancyGrid& grid, int col, int row, double max_distance,
+                            DistanceTo sources = DistanceTo::occupied) {
+  return brute_force_distance(source_cells(grid, sources), grid.resolution(), col, row, max_distance);
 }
 
 // Distances are stored as float; exact means "the float nearest the true value".
@@ -75,11 +93,13 @@ TEST(DistanceMap, MatchesBruteForceOnRandomGrids) {
 TEST(DistanceMap, MatchesBruteForceWhenTheCapSplitsRows) {
   for (unsigned seed = 1; seed <= 4; ++seed) {
     const OccupancyGrid grid = random_grid(230, 30, 0.004, seed);
+    const auto sources = source_cells(grid);
     for (const double max_distance : {0.05, 0.3, 0.55, 1.2}) {
       const DistanceMap map(grid, max_distance);
       for (int row = 0; row < grid.height(); ++row) {
         for (int col = 0; col < grid.width(); ++col) {
-          ASSERT_EQ(map.at(col, row), as_stored(brute_force_distance(grid, col, row, max_distance)))
+          ASSERT_EQ(map.at(col, row),
+                    as_stored(brute_force_distance(sources, grid.resolution(), col, row, max_distance)))
               << "seed " << seed << " cap " << max_distance << " at " << col << "," << row;
         }
       }
