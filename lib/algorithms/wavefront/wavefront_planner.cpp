@@ -223,6 +223,16 @@ PlanResult WavefrontPlanner::plan(const Eigen::Vector2d& start, const Eigen::Vec
     return result;
   }
 
+  const SearchOutcome outcome = search(start, start_cells, goal_cells);
+  result.cells_settled = outcome.cells_settled;
+  if (!std::isfinite(outcome.cost)) return result;  // unreachable
+  result.cost = outcome.cost;
+  return finish(waypoints_along(chain_from(outcome.start_cell, start, goal)));
+}
+
+WavefrontPlanner::SearchOutcome WavefrontPlanner::search(const Eigen::Vector2d& start,
+                                                         const std::vector<Connection>& start_cells,
+                                                         const std::vector<Connection>& goal_cells) {
   // A new generation makes every cost of earlier plans stale without
   // touching them; only every 15th plan clears the flags.
   if (++generation_ > kGenerations) {
@@ -310,6 +320,7 @@ PlanResult WavefrontPlanner::plan(const Eigen::Vector2d& start, const Eigen::Vec
   // expanded at its final cost when the loop ends, so the total is the least.
   double best_total = std::numeric_limits<double>::infinity();
   std::size_t best_cell = 0;
+  std::size_t settled = 0;
   constexpr auto kDiagonal = static_cast<float>(kSqrt2);
   for (; queued > 0 && static_cast<double>(level) < best_total; ++level) {
     std::vector<Queued>& bucket = buckets_[level & bucket_mask];
@@ -327,7 +338,7 @@ PlanResult WavefrontPlanner::plan(const Eigen::Vector2d& start, const Eigen::Vec
       const std::size_t cell = entry.cell;
       const float here = cells[cell].cost;
       if (here < entry.cost) continue;  // queued again at a lower cost since
-      ++result.cells_settled;
+      ++settled;
       if (cell >= start_box_first && cell <= start_box_last) {
         for (const Connection& c : start_cells) {
           if (c.cell == cell && here + c.cost < best_total) {
@@ -351,18 +362,22 @@ PlanResult WavefrontPlanner::plan(const Eigen::Vector2d& start, const Eigen::Vec
     }
     bucket.clear();
   }
-  if (!std::isfinite(best_total)) return result;  // unreachable
-  result.cost = best_total;
+  return {best_total, best_cell, settled};
+}
 
+std::vector<Eigen::Vector2d> WavefrontPlanner::chain_from(std::size_t first_cell, const Eigen::Vector2d& start,
+                                                          const Eigen::Vector2d& goal) const {
   std::vector<Eigen::Vector2d> chain{start};
-  for (std::size_t cell = best_cell;;) {
+  for (std::size_t cell = first_cell;;) {
     chain.push_back(padded_centre(cell));
     const std::uint16_t bits = cells_[cell].bits;
     if (!(bits & kHasSuccessor)) break;  // a goal cell
-    cell = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(cell) + offset[(bits >> kDirectionShift) & 7]);
+    const Neighbour& toward = kNeighbours[(bits >> kDirectionShift) & 7];
+    cell = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(cell) +
+                                    toward.drow * static_cast<std::ptrdiff_t>(stride_) + toward.dcol);
   }
   chain.push_back(goal);
-  return finish(waypoints_along(chain));
+  return chain;
 }
 
 // 1.5 walks the chain and puts the next waypoint where the line of sight

@@ -18,6 +18,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -104,7 +105,22 @@ class WavefrontPlanner {
     double cost;       // from the point to the cell centre, in cells
   };
 
+  // What the wavefront found: the cost of the cheapest way from the start to
+  // the goal (infinite: none) and the start's candidate cell it goes through.
+  struct SearchOutcome {
+    double cost = std::numeric_limits<double>::infinity();
+    std::size_t start_cell = 0;  // padded index
+    std::size_t cells_settled = 0;
+  };
+
   EndpointState check_endpoint(const Eigen::Vector2d& point, double& clearance) const;
+  // The wavefront from the goal's cells until no cheaper way to a start cell
+  // can remain; leaves each reached cell's cost and successor in cells_.
+  SearchOutcome search(const Eigen::Vector2d& start, const std::vector<Connection>& start_cells,
+                       const std::vector<Connection>& goal_cells);
+  // The start, the cell centres from first_cell along the successors, the goal.
+  std::vector<Eigen::Vector2d> chain_from(std::size_t first_cell, const Eigen::Vector2d& start,
+                                          const Eigen::Vector2d& goal) const;
   std::vector<Connection> connections(const Eigen::Vector2d& point) const;
   std::size_t padded_index(int col, int row) const;
   Eigen::Vector2d padded_centre(std::size_t index) const;
