@@ -44,6 +44,12 @@ void PoseClusterer::cluster(std::span<const Particle> particles, double cell_siz
   out.clear();
   if (particles.empty()) return;
   const PoseBinning binning(cell_size, angle_size);
+  const bool dense = number_bins(particles, binning);
+  join_touching_bins(binning, dense);
+  summarise_clusters(particles, out);
+}
+
+bool PoseClusterer::number_bins(std::span<const Particle> particles, const PoseBinning& binning) {
   bin_coordinates_.clear();
   particle_bin_.resize(particles.size());
   particle_pose_bin_.resize(particles.size());
@@ -81,7 +87,10 @@ void PoseClusterer::cluster(std::span<const Particle> particles, double cell_siz
       particle_bin_[i] = index;
     }
   }
+  return dense;
+}
 
+void PoseClusterer::join_touching_bins(const PoseBinning& binning, bool dense) {
   const std::size_t bin_count = bin_coordinates_.size();
   parent_.resize(bin_count);
   for (std::uint32_t b = 0; b < bin_count; ++b) parent_[b] = b;
@@ -111,7 +120,10 @@ void PoseClusterer::cluster(std::span<const Particle> particles, double cell_siz
     const auto in_table = [&](const PoseBin& bin) { return bins_.find(PoseBinning::key(bin)); };
     for (std::uint32_t b = 0; b < bin_count; ++b) join_touching(bin_coordinates_[b], b, in_table);
   }
+}
 
+void PoseClusterer::summarise_clusters(std::span<const Particle> particles, std::vector<Hypothesis>& out) {
+  const std::size_t bin_count = bin_coordinates_.size();
   // Number clusters in order of their first bin, so results do not depend
   // on hash order.
   cluster_of_root_.assign(bin_count, BinTable::not_found);

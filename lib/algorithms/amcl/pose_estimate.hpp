@@ -40,6 +40,13 @@ class PoseClusterer {
   void use_dense_grid(bool on) { dense_grid_allowed_ = on; }
 
  private:
+  // Gives every particle its bin's number (particle_bin_), bins numbered
+  // in the order their first particle comes; true when through the dense grid.
+  bool number_bins(std::span<const Particle> particles, const PoseBinning& binning);
+  // Joins touching bins into sets (parent_, a set's root its lowest bin).
+  void join_touching_bins(const PoseBinning& binning, bool dense);
+  // A hypothesis per set: weight, mean and covariance of its particles.
+  void summarise_clusters(std::span<const Particle> particles, std::vector<Hypothesis>& out);
   std::uint32_t find_root(std::uint32_t bin);
 
   struct Accumulator {
