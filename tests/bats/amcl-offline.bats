@@ -214,6 +214,36 @@ PY
   [ "$status" -eq 1 ]
 }
 
+# A recording whose first scan came before the truth device's first sample
+# (player-log record subscribes to one device after another).
+write_truth_after_first_scan() {
+  cat >"$1" <<'LOG'
+## Player version 1.5
+## File version 0.0.0
+0000000010.000 robot 6665 position 00 0000000010.000 +01.000 +02.000 +0.500 +00.000 +00.000 +00.000 0
+0000000010.050 robot 6665 laser 00 0000000010.050 -1.5708 +1.5708 +1.5708 0003 1.000  0 2.000  0 3.000  0
+0000000010.100 robot 6665 position 00 0000000010.100 +01.100 +02.000 +0.600 +00.000 +00.000 +00.000 0
+0000000010.150 robot 6665 laser 00 0000000010.150 -1.5708 +1.5708 +1.5708 0003 4.000  0 5.000  0 6.000  0
+0000000010.160 robot 6665 truth 00 0000000010.150 +05.000 +06.000 +0.700
+0000000010.170 robot 6665 position 00 0000000010.150 +01.200 +02.000 +0.650 +00.000 +00.000 +00.000 0
+LOG
+}
+
+@test "--init-pose truth starts at the first scan with a true pose and says what it skipped; no truth at all exits 1" {
+  cave=(--map "$repo_root/data/worlds/cave.pnm" --scale 0.03 --negate --origin 0,0)
+  write_truth_after_first_scan run.log
+  run --separate-stderr "$amcl_offline" localize run.log "${cave[@]}" --init-pose truth -o estimate.csv
+  [ "$status" -eq 0 ]
+  [[ "$stderr" == *"warning: started at the first scan with a true pose; 1 scan before it skipped"* ]]
+  [ "$(wc -l <estimate.csv)" -eq 2 ]  # the header and the scan at 10.15
+  [[ "$(sed -n 2p estimate.csv)" == 10.150000,5.0* || "$(sed -n 2p estimate.csv)" == 10.150000,4.9* ]]
+
+  grep -v ' truth ' run.log >no-truth.log
+  run --separate-stderr "$amcl_offline" localize no-truth.log "${cave[@]}" --init-pose truth -o estimate.csv
+  [ "$status" -eq 1 ]
+  [[ "$stderr" == *"no-truth.log: no scan with odometry has a true pose to start from"* ]]
+}
+
 # Output files (docs/compatibility.md, "Output files"): never over an input,
 # written through a temporary renamed at the end, .gz written compressed.
 

@@ -110,8 +110,9 @@ int run_localize(const LocalizeOptions& options, std::ostream& out, std::ostream
         << summary.real_time_factor() << "x real time\n";
   }
   if (summary.scans_before_truth > 0) {
-    err << "amcl-offline: warning: the first " << summary.scans_before_truth
-        << " scans had no true pose yet: started at the first that had one\n";
+    err << "amcl-offline: warning: started at the first scan with a true pose; "
+        << summary.scans_before_truth << (summary.scans_before_truth == 1 ? " scan" : " scans")
+        << " before it skipped\n";
   }
   if (summary.scans_without_odometry > 0) {
     err << "amcl-offline: warning: " << summary.scans_without_odometry << " scans without odometry were skipped\n";
