@@ -105,6 +105,8 @@ int run_localize(const LocalizeOptions& options, std::ostream& out, std::ostream
       << summary.laser_updates << " updates) in " << std::setprecision(2) << summary.wall_seconds << " s wall";
   if (summary.synthetic_times) {
     err << "; no real-time factor: the log has no usable times\n";
+  } else if (!(summary.log_seconds > 0)) {
+    err << "; no real-time factor: the scans span no time\n";
   } else {
     err << ", " << std::setprecision(1) << summary.log_seconds << " s of log: " << std::setprecision(0)
         << summary.real_time_factor() << "x real time\n";
