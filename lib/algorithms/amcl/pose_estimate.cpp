@@ -140,36 +140,35 @@ void PoseClusterer::summarise_clusters(std::span<const Particle> particles, std:
   }
   const auto cluster_of = [&](std::size_t particle) { return cluster_of_root_[parent_[particle_bin_[particle]]]; };
   // Sums per cluster in particle order. Runs of particles share a cluster
-  // (most belong to one): a run's sums stay in a local until the cluster
-  // changes, where sums kept in the vector made each particle wait for the
-  // last one's store. The additions are the same, in the same order.
+  // (most belong to one): a run's sums stay in locals, in registers, until
+  // the cluster changes. Summed in memory (in the vector, or in a struct the
+  // compiler kept on the stack), each particle waited for the last one's
+  // stores. The additions are the same, in the same order.
   std::uint32_t current = BinTable::not_found;
-  Accumulator run;
-  const auto run_of = [&](std::uint32_t k) -> Accumulator& {
-    if (k != current) {
-      if (current != BinTable::not_found) accumulators_[current] = run;
-      current = k;
-      run = accumulators_[k];
-    }
-    return run;
-  };
-  const auto end_run = [&] {
-    if (current != BinTable::not_found) accumulators_[current] = run;
-    current = BinTable::not_found;
+  double weight = 0.0, x = 0.0, y = 0.0, cos_yaw = 0.0, sin_yaw = 0.0;
+  const auto store_moments = [&] {
+    if (current == BinTable::not_found) return;
+    Accumulator& a = accumulators_[current];
+    a.weight = weight, a.x = x, a.y = y, a.cos_yaw = cos_yaw, a.sin_yaw = sin_yaw;
   };
   double total = 0.0;
   for (std::size_t i = 0; i < particles.size(); ++i) {
-    Accumulator& a = run_of(cluster_of(i));
+    if (const std::uint32_t k = cluster_of(i); k != current) {
+      store_moments();
+      current = k;
+      const Accumulator& a = accumulators_[k];
+      weight = a.weight, x = a.x, y = a.y, cos_yaw = a.cos_yaw, sin_yaw = a.sin_yaw;
+    }
     const Particle& p = particles[i];
-    a.weight += p.weight;
-    a.x += p.weight * p.pose.x;
-    a.y += p.weight * p.pose.y;
+    weight += p.weight;
+    x += p.weight * p.pose.x;
+    y += p.weight * p.pose.y;
     const geometry::SinCos heading = geometry::sin_cos(p.pose.yaw);
-    a.cos_yaw += p.weight * heading.cos;
-    a.sin_yaw += p.weight * heading.sin;
+    cos_yaw += p.weight * heading.cos;
+    sin_yaw += p.weight * heading.sin;
     total += p.weight;
   }
-  end_run();
+  store_moments();
   out.resize(accumulators_.size());
   for (std::size_t k = 0; k < accumulators_.size(); ++k) {
     const Accumulator& a = accumulators_[k];
@@ -182,22 +181,32 @@ void PoseClusterer::summarise_clusters(std::span<const Particle> particles, std:
       h.mean = {};
     }
   }
+  // weight * d * d^T, element by element, row by row.
+  current = BinTable::not_found;
+  double s00 = 0.0, s01 = 0.0, s02 = 0.0, s10 = 0.0, s11 = 0.0, s12 = 0.0, s20 = 0.0, s21 = 0.0, s22 = 0.0;
+  const auto store_scatter = [&] {
+    if (current == BinTable::not_found) return;
+    accumulators_[current].scatter << s00, s01, s02, s10, s11, s12, s20, s21, s22;
+  };
   for (std::size_t i = 0; i < particles.size(); ++i) {
-    const std::uint32_t k = cluster_of(i);
-    const Particle& p = particles[i];
-    const Hypothesis& h = out[k];
-    const std::array<double, 3> d{p.pose.x - h.mean.x, p.pose.y - h.mean.y,
-                                  geometry::angle_difference(p.pose.yaw, h.mean.yaw)};
-    // weight * d * d^T, element by element: as an Eigen expression the
-    // compiler built it in memory with stores the next loads could not
-    // forward from, a stall per particle.
-    Eigen::Matrix3d& scatter = run_of(k).scatter;
-    for (int row = 0; row < 3; ++row) {
-      const double weighted = p.weight * d[static_cast<std::size_t>(row)];
-      for (int col = 0; col < 3; ++col) scatter(row, col) += weighted * d[static_cast<std::size_t>(col)];
+    if (const std::uint32_t k = cluster_of(i); k != current) {
+      store_scatter();
+      current = k;
+      const Eigen::Matrix3d& m = accumulators_[k].scatter;
+      s00 = m(0, 0), s01 = m(0, 1), s02 = m(0, 2);
+      s10 = m(1, 0), s11 = m(1, 1), s12 = m(1, 2);
+      s20 = m(2, 0), s21 = m(2, 1), s22 = m(2, 2);
     }
+    const Particle& p = particles[i];
+    const Hypothesis& h = out[current];
+    const double d0 = p.pose.x - h.mean.x, d1 = p.pose.y - h.mean.y;
+    const double d2 = geometry::angle_difference(p.pose.yaw, h.mean.yaw);
+    const double w0 = p.weight * d0, w1 = p.weight * d1, w2 = p.weight * d2;
+    s00 += w0 * d0, s01 += w0 * d1, s02 += w0 * d2;
+    s10 += w1 * d0, s11 += w1 * d1, s12 += w1 * d2;
+    s20 += w2 * d0, s21 += w2 * d1, s22 += w2 * d2;
   }
-  end_run();
+  store_scatter();
   for (std::size_t k = 0; k < out.size(); ++k) {
     if (accumulators_[k].weight > 0.0) {
       out[k].covariance = accumulators_[k].scatter / accumulators_[k].weight;
