@@ -8,20 +8,25 @@
 
 namespace playerkit::amcl {
 
+void WeightedMoments::add(const Particle& particle) {
+  weight += particle.weight;
+  x += particle.weight * particle.pose.x;
+  y += particle.weight * particle.pose.y;
+  const geometry::SinCos heading = geometry::sin_cos(particle.pose.yaw);
+  cos_yaw += particle.weight * heading.cos;
+  sin_yaw += particle.weight * heading.sin;
+}
+
+geometry::Pose2 WeightedMoments::mean() const { return {x / weight, y / weight, std::atan2(sin_yaw, cos_yaw)}; }
+
 Hypothesis weighted_estimate(std::span<const Particle> particles) {
   Hypothesis estimate;
-  double total = 0.0, x = 0.0, y = 0.0, c = 0.0, s = 0.0;
-  for (const Particle& particle : particles) {
-    total += particle.weight;
-    x += particle.weight * particle.pose.x;
-    y += particle.weight * particle.pose.y;
-    const geometry::SinCos heading = geometry::sin_cos(particle.pose.yaw);
-    c += particle.weight * heading.cos;
-    s += particle.weight * heading.sin;
-  }
+  WeightedMoments moments;
+  for (const Particle& particle : particles) moments.add(particle);
+  const double total = moments.weight;
   if (!(total > 0.0)) return estimate;
   estimate.weight = total;
-  estimate.mean = {x / total, y / total, std::atan2(s, c)};
+  estimate.mean = moments.mean();
   for (const Particle& particle : particles) {
     const Eigen::Vector3d d(particle.pose.x - estimate.mean.x, particle.pose.y - estimate.mean.y,
                             geometry::angle_difference(particle.pose.yaw, estimate.mean.yaw));
@@ -141,47 +146,38 @@ void PoseClusterer::summarise_clusters(std::span<const Particle> particles, std:
   const auto cluster_of = [&](std::size_t particle) { return cluster_of_root_[parent_[particle_bin_[particle]]]; };
   // Sums per cluster in particle order. Runs of particles share a cluster
   // (most belong to one): a run's sums stay in locals, in registers, until
-  // the cluster changes. Summed in memory (in the vector, or in a struct the
-  // compiler kept on the stack), each particle waited for the last one's
-  // stores. The additions are the same, in the same order.
+  // the cluster changes. Summed in memory, each particle waited for the
+  // last one's stores. The additions are the same, in the same order.
   std::uint32_t current = BinTable::not_found;
-  double weight = 0.0, x = 0.0, y = 0.0, cos_yaw = 0.0, sin_yaw = 0.0;
+  WeightedMoments run;
   const auto store_moments = [&] {
-    if (current == BinTable::not_found) return;
-    Accumulator& a = accumulators_[current];
-    a.weight = weight, a.x = x, a.y = y, a.cos_yaw = cos_yaw, a.sin_yaw = sin_yaw;
+    if (current != BinTable::not_found) accumulators_[current].moments = run;
   };
   double total = 0.0;
   for (std::size_t i = 0; i < particles.size(); ++i) {
     if (const std::uint32_t k = cluster_of(i); k != current) {
       store_moments();
       current = k;
-      const Accumulator& a = accumulators_[k];
-      weight = a.weight, x = a.x, y = a.y, cos_yaw = a.cos_yaw, sin_yaw = a.sin_yaw;
+      run = accumulators_[k].moments;
     }
-    const Particle& p = particles[i];
-    weight += p.weight;
-    x += p.weight * p.pose.x;
-    y += p.weight * p.pose.y;
-    const geometry::SinCos heading = geometry::sin_cos(p.pose.yaw);
-    cos_yaw += p.weight * heading.cos;
-    sin_yaw += p.weight * heading.sin;
-    total += p.weight;
+    run.add(particles[i]);
+    total += particles[i].weight;
   }
   store_moments();
   out.resize(accumulators_.size());
   for (std::size_t k = 0; k < accumulators_.size(); ++k) {
-    const Accumulator& a = accumulators_[k];
+    const WeightedMoments& moments = accumulators_[k].moments;
     Hypothesis& h = out[k];
-    h.weight = a.weight;
+    h.weight = moments.weight;
     h.covariance.setZero();
-    if (a.weight > 0.0) {
-      h.mean = {a.x / a.weight, a.y / a.weight, std::atan2(a.sin_yaw, a.cos_yaw)};
+    if (moments.weight > 0.0) {
+      h.mean = moments.mean();
     } else {
       h.mean = {};
     }
   }
-  // weight * d * d^T, element by element, row by row.
+  // weight * d * d^T, element by element, row by row, in nine locals: as
+  // an Eigen matrix the compiler kept the sums on the stack.
   current = BinTable::not_found;
   double s00 = 0.0, s01 = 0.0, s02 = 0.0, s10 = 0.0, s11 = 0.0, s12 = 0.0, s20 = 0.0, s21 = 0.0, s22 = 0.0;
   const auto store_scatter = [&] {
@@ -208,8 +204,8 @@ void PoseClusterer::summarise_clusters(std::span<const Particle> particles, std:
   }
   store_scatter();
   for (std::size_t k = 0; k < out.size(); ++k) {
-    if (accumulators_[k].weight > 0.0) {
-      out[k].covariance = accumulators_[k].scatter / accumulators_[k].weight;
+    if (accumulators_[k].moments.weight > 0.0) {
+      out[k].covariance = accumulators_[k].scatter / accumulators_[k].moments.weight;
     }
     out[k].weight = total > 0.0 ? out[k].weight / total
                                 : 1.0 / static_cast<double>(out.size());

@@ -25,6 +25,15 @@ struct Hypothesis {
   double weight = 0.0;
 };
 
+// The weighted sums a mean pose is made of, yaw as summed unit vectors.
+struct WeightedMoments {
+  double weight = 0.0, x = 0.0, y = 0.0, cos_yaw = 0.0, sin_yaw = 0.0;
+
+  void add(const Particle& particle);
+  // Meaningful only when weight > 0.
+  [[nodiscard]] geometry::Pose2 mean() const;
+};
+
 // The weighted mean and covariance of a set of particles (one cluster).
 Hypothesis weighted_estimate(std::span<const Particle> particles);
 
@@ -50,7 +59,7 @@ class PoseClusterer {
   std::uint32_t find_root(std::uint32_t bin);
 
   struct Accumulator {
-    double weight = 0.0, x = 0.0, y = 0.0, cos_yaw = 0.0, sin_yaw = 0.0;
+    WeightedMoments moments;
     Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
   };
 
