@@ -31,7 +31,7 @@ namespace playerkit::amcl {
 // A pose and its uncertainty (x, y, yaw: m^2, rad^2) to start from.
 struct StartPose {
   geometry::Pose2 mean;
-  Eigen::Matrix3d covariance;
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();
 };
 
 class AmclFilter {

@@ -113,9 +113,7 @@ void AmclDriver::close() {
 }
 
 void AmclDriver::start_filter() {
-  std::optional<amcl::StartPose> start;
-  if (options_.initial_pose) start = amcl::StartPose{options_.initial_pose->mean, options_.initial_pose->covariance};
-  filter_ = std::make_unique<amcl::AmclFilter>(parameters_, options_.map, options_.seed, start);
+  filter_ = std::make_unique<amcl::AmclFilter>(parameters_, options_.map, options_.seed, options_.initial_pose);
   filter_moved_ = false;
   last_processed_ = {};
 }

@@ -169,11 +169,11 @@ geometry::Pose2 read_pose(const config::Section& section, std::string_view name)
           geometry::normalize_angle(section.read_tuple_angle(name, 2, 0.0))};
 }
 
-std::optional<InitialPose> read_initial_pose(const config::Section& section, const grid::OccupancyGrid& map) {
+std::optional<amcl::StartPose> read_initial_pose(const config::Section& section, const grid::OccupancyGrid& map) {
   const bool global = section.read_int("init_pose_global", 0) != 0;
   const bool has_pose = section.has("init_pose");
   const bool has_spread = section.has("init_pose_var");
-  InitialPose initial;
+  amcl::StartPose initial;
   initial.mean = read_pose(section, "init_pose");
   // Standard deviations (m, m, angle), as 1.5 read them despite the name.
   const double sx = section.read_tuple_length("init_pose_var", 0, kDefaultInitialStdDev);

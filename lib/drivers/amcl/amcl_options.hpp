@@ -3,23 +3,17 @@
 // real key names, and the newer tunables under ROS amcl's names), read into
 // what the driver needs. README.md lists every option with its default.
 
-#include <Eigen/Core>
-
 #include <cstdint>
 #include <memory>
 #include <optional>
 
+#include "algorithms/amcl/amcl_filter.hpp"
 #include "algorithms/amcl/amcl_parameters.hpp"
 #include "algorithms/geometry/pose2.hpp"
 #include "algorithms/grid/occupancy_grid.hpp"
 #include "config/section.hpp"
 
 namespace playerkit::drivers {
-
-struct InitialPose {
-  geometry::Pose2 mean;
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();  // (x, y, yaw): m^2, rad^2
-};
 
 struct AmclOptions {
   int position_index = 0;
@@ -29,7 +23,7 @@ struct AmclOptions {
   geometry::Pose2 laser_pose;    // laser in the robot frame
   double laser_range_max = 8.0;  // m; readings at or beyond it are "no return"
   // Empty: start spread uniformly over the free space (global localization).
-  std::optional<InitialPose> initial_pose;
+  std::optional<amcl::StartPose> initial_pose;
   std::uint64_t seed = 0;
 };
 
