@@ -15,8 +15,10 @@ struct ImageSize {
 };
 
 // The width and height declared by a PNM (P1-P6: Player's maps) or PNG
-// header, as lib/image reads them; nullopt for other formats or a header
-// that cannot be read (the decoder then reports those).
+// header, as lib/image reads them; nullopt for other formats, a header
+// that cannot be read, or a side of 0 or over 2^31 - 1, which no PNG has
+// (the decoder then reports those). A size returned has 1 to 2^31 - 1
+// pixels a side, so width * height cannot overflow a long long.
 std::optional<ImageSize> image_size_from_header_bytes(std::string_view header);
 std::optional<ImageSize> image_size_from_header(const std::filesystem::path& file);
 

@@ -47,6 +47,52 @@ TEST(ImageHeader, ReadsPnmAndPngSizes) {
   EXPECT_FALSE(image_size_from_header_bytes("P5\nxx"));
 }
 
+// Issue 27: sides past PNG's 2^31 - 1 were returned, and width * height of
+// 4093640705 x 4093640705 overflowed a long long in every caller.
+TEST(ImageHeader, APngSideOfZeroOrPast2To31Minus1IsNoSize) {
+  EXPECT_FALSE(image_size_from_header_bytes(png_header(4093640705u, 4093640705u)));
+  EXPECT_FALSE(image_size_from_header_bytes(png_header(0xffffffffu, 0xffffffffu)));
+  EXPECT_FALSE(image_size_from_header_bytes(png_header(0x80000000u, 1)));
+  EXPECT_FALSE(image_size_from_header_bytes(png_header(1, 0x80000000u)));
+  EXPECT_FALSE(image_size_from_header_bytes(png_header(0, 5)));
+  EXPECT_FALSE(image_size_from_header_bytes(png_header(5, 0)));
+  const auto largest = image_size_from_header_bytes(png_header(0x7fffffffu, 0x7fffffffu));
+  ASSERT_TRUE(largest);
+  EXPECT_EQ(largest->width, 0x7fffffff);
+  EXPECT_EQ(largest->height, 0x7fffffff);
+}
+
+// A PNM's numbers go to 2^32 - 1: the same bounds as a PNG's.
+TEST(ImageHeader, APnmSideOfZeroOrPast2To31Minus1IsNoSize) {
+  EXPECT_FALSE(image_size_from_header_bytes("P5\n4294967295 4294967295\n255\n"));
+  EXPECT_FALSE(image_size_from_header_bytes("P5\n4093640705 4093640705\n255\n"));
+  EXPECT_FALSE(image_size_from_header_bytes("P2\n2147483648 1\n255\n"));
+  EXPECT_FALSE(image_size_from_header_bytes("P1\n1 2147483648\n"));
+  EXPECT_FALSE(image_size_from_header_bytes("P5\n0 10\n255\n"));
+  EXPECT_FALSE(image_size_from_header_bytes("P4\n10 0\n"));
+  EXPECT_FALSE(image_size_from_header_bytes("P5\n99999999999999999999 1\n255\n"));
+  const auto largest = image_size_from_header_bytes("P5\n2147483647 2147483647\n255\n");
+  ASSERT_TRUE(largest);
+  EXPECT_EQ(largest->width, 2147483647);
+  EXPECT_EQ(largest->height, 2147483647);
+}
+
+// load_map leaves such a header to the decoder, which refuses it; before,
+// its own size check multiplied the sides (UBSan stopped there).
+TEST(MapLimits, AnImageDeclaringSidesNoPngHasIsRefused) {
+  Scratch scratch("map_limits_test");
+  const auto pgm = scratch.write("huge.pgm", "P5\n4294967295 4294967295\n255\n");
+  EXPECT_EQ(error_of(pgm, {.resolution = 0.05}),
+            pgm.string() + ": cannot read as an image: PNM: an image of 4294967295 x 4294967295 pixels is empty or too large");
+  const auto png = scratch.write("huge.png", png_header(4093640705u, 4093640705u));
+  EXPECT_EQ(error_of(png, {.resolution = 0.05}),
+            png.string() + ": cannot read as an image: PNG: the file ends inside chunk IHDR (truncated)");
+  // At 2^31 - 1 a side the header is read, and the product is refused exactly.
+  const auto largest = scratch.write("largest.pgm", "P5\n2147483647 2147483647\n255\n");
+  EXPECT_EQ(error_of(largest, {.resolution = 0.05}),
+            largest.string() + ": a map of 2147483647 x 2147483647 cells (4611686014132 million) is more than the limit of 50 million");
+}
+
 TEST(MapLimits, AnImageDeclaringTooManyPixelsIsRefusedBeforeDecoding) {
   Scratch scratch("map_limits_test");
   // 100000 x 100000 pixels declared in a few bytes: decoding would take 10 GB.
