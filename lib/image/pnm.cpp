@@ -83,8 +83,9 @@ Decoded decode_pnm(std::span<const std::uint8_t> bytes) {
   if (!reader.number(width) || !reader.number(height) || (!bitmap && !reader.number(maxval))) {
     return pnm_failure("a bad header (width, height" + std::string(bitmap ? "" : ", maxval") + " expected)");
   }
-  if (width == 0 || height == 0 || std::int64_t{width} * std::int64_t{height} > kMaxPixels ||
-      width > 0x7fffffffu || height > 0x7fffffffu) {
+  // The sides before their product: two of up to 2^32 - 1 overflow an int64.
+  if (width == 0 || height == 0 || width > 0x7fffffffu || height > 0x7fffffffu ||
+      std::int64_t{width} * std::int64_t{height} > kMaxPixels) {
     return pnm_failure("an image of " + std::to_string(width) + " x " + std::to_string(height) +
                    " pixels is empty or too large");
   }

@@ -67,6 +67,10 @@ TEST(DecodePnm, DamagedFilesGetAnError) {
   EXPECT_NE(decode("P5 4 x 255\n").error.find("bad header"), std::string::npos);
   EXPECT_NE(decode("P5 0 4 255\n").error.find("empty or too large"), std::string::npos);
   EXPECT_NE(decode("P5 100000 100000 255\n").error.find("too large"), std::string::npos);
+  // Sides whose product overflows an int64 (UBSan stopped here; issue 27's PNM twin).
+  EXPECT_NE(decode("P5 4294967295 4294967295 255\n").error.find("4294967295 x 4294967295 pixels is empty or too large"),
+            std::string::npos);
+  EXPECT_NE(decode("P5 2147483648 1 255\n").error.find("too large"), std::string::npos);
   EXPECT_NE(decode("P5 1 1 70000\n").error.find("maxval"), std::string::npos);
   EXPECT_NE(decode("P7 1 1 255\n").error.find("not a PBM"), std::string::npos);
   EXPECT_FALSE(is_pnm(bytes_of("GIF89a")));
