@@ -21,11 +21,19 @@ namespace map_image_detail {
 
 constexpr long long kMaxFuzzPixels = 1 << 20;
 
+// Each side bounded before the product: a header may declare sides of up to
+// 2^32 - 1 (a PNG's u32 fields, a PNM's numbers), whose product overflows a
+// long long, and this test must not rely on the library having refused them.
+bool too_large_to_decode_here(const map::ImageSize& size) {
+  return size.width > kMaxFuzzPixels || size.height > kMaxFuzzPixels ||
+         size.width * size.height > kMaxFuzzPixels;
+}
+
 }  // namespace map_image_detail
 
 int map_image(const std::uint8_t* data, std::size_t size) {
   const auto header = map::image_size_from_header_bytes(as_text({data, size}));
-  if (header && header->width * header->height > map_image_detail::kMaxFuzzPixels) return 0;
+  if (header && map_image_detail::too_large_to_decode_here(*header)) return 0;
   const auto file = scratch_directory() / "fuzz-map.img";
   {
     std::ofstream out(file, std::ios::binary | std::ios::trunc);
