@@ -55,11 +55,11 @@
 #include "core/driver_registry.hpp"
 #include "core/instantiate.hpp"
 #include "core/logger.hpp"
-#include "drivers/sick/sicklms200_driver.hpp"
+#include "families/sick/driver/sicklms200_driver.hpp"
 #include "emulators/runner/emulator_runner.hpp"
-#include "emulators/sick/sick_lms200_emulator.hpp"
-#include "hardware/sick/scan.hpp"
-#include "hardware/sick/telegram.hpp"
+#include "families/sick/emulator/sick_lms200_emulator.hpp"
+#include "families/sick/protocol/scan.hpp"
+#include "families/sick/protocol/telegram.hpp"
 #include "protocol/binary_codec.hpp"
 #include "protocol/interfaces.hpp"
 #include "protocol/messages/laser.hpp"
@@ -87,7 +87,6 @@ class TimedLaser final : public emulators::DeviceEmulator {
  public:
   explicit TimedLaser(emulators::SickEmulatorOptions options) : inner_(std::move(options)) {}
 
-  [[nodiscard]] std::string_view protocol_name() const override { return inner_.protocol_name(); }
   void receive(std::span<const std::uint8_t> bytes, emulators::Duration now, int host_baud) override {
     inner_.receive(bytes, now, host_baud);
   }

@@ -82,3 +82,67 @@ function(playerkit_builtin_drivers)
   list(TRANSFORM families PREPEND playerkit_drivers_ OUTPUT_VARIABLE family_targets)
   target_link_libraries(playerkit_drivers PUBLIC playerkit_core ${family_targets} PRIVATE playerkit_warnings)
 endfunction()
+
+# playerkit_add_family(name)
+#
+# The one line that adds a hardware family (lib/families/<name>) to the build,
+# unless -DPLAYERKIT_DRIVERS_<NAME>=OFF leaves it out: its protocol, drivers,
+# emulators, probes and trace framing all go together.
+function(playerkit_add_family name)
+  string(TOUPPER "${name}" upper)
+  option(PLAYERKIT_DRIVERS_${upper} "Build the ${name} family (drivers, emulators, probes)" ON)
+  if(NOT PLAYERKIT_DRIVERS_${upper})
+    message(STATUS "families: ${name} left out (PLAYERKIT_DRIVERS_${upper}=OFF)")
+    return()
+  endif()
+  add_subdirectory(${name})
+endfunction()
+
+# playerkit_family_spec(NAME family SPEC function HEADER header
+#                       [DEPENDS target...] [TEST_DEPENDS target...])
+#
+# A family's own folder (lib/families/<family>): library
+# playerkit_<family>_family of its sources (the spec, probes, emulator
+# factories), test program <family>_family_test, and the registration of
+# `families::FamilySpec function()` (namespace playerkit::families) in the
+# built-in family list (builtin_families.cpp.in).
+function(playerkit_family_spec)
+  cmake_parse_arguments(ARG "" "NAME;SPEC;HEADER" "DEPENDS;TEST_DEPENDS" ${ARGN})
+  file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
+  list(FILTER sources EXCLUDE REGEX "_test\\.cpp$")
+  add_library(playerkit_${ARG_NAME}_family ${sources})
+  target_include_directories(playerkit_${ARG_NAME}_family PUBLIC ${PROJECT_SOURCE_DIR}/lib)
+  target_link_libraries(playerkit_${ARG_NAME}_family
+    PUBLIC playerkit_families ${ARG_DEPENDS} PRIVATE playerkit_warnings)
+  set_property(GLOBAL APPEND PROPERTY PLAYERKIT_FAMILY_SPECS ${ARG_NAME})
+  set_property(GLOBAL PROPERTY PLAYERKIT_FAMILY_SPEC_${ARG_NAME} ${ARG_SPEC})
+  set_property(GLOBAL PROPERTY PLAYERKIT_FAMILY_HEADER_${ARG_NAME} ${ARG_HEADER})
+  file(GLOB tests CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*_test.cpp)
+  if(tests)
+    playerkit_add_test(NAME ${ARG_NAME}_family_test SOURCES ${tests}
+                       LIBS playerkit_${ARG_NAME}_family ${ARG_TEST_DEPENDS})
+  endif()
+endfunction()
+
+# After every family: playerkit_family_registry, the built-in family list of
+# what was built (families::register_builtin_families).
+function(playerkit_builtin_families)
+  get_property(families GLOBAL PROPERTY PLAYERKIT_FAMILY_SPECS)
+  set(includes "")
+  set(registrations "")
+  set(targets "")
+  foreach(family IN LISTS families)
+    get_property(header GLOBAL PROPERTY PLAYERKIT_FAMILY_HEADER_${family})
+    get_property(spec GLOBAL PROPERTY PLAYERKIT_FAMILY_SPEC_${family})
+    string(APPEND includes "#include \"${header}\"\n")
+    string(APPEND registrations "  registry.add(${spec}());\n")
+    list(APPEND targets playerkit_${family}_family)
+  endforeach()
+  set(PLAYERKIT_FAMILY_INCLUDES "${includes}")
+  set(PLAYERKIT_FAMILY_REGISTRATIONS "${registrations}")
+  configure_file(${CMAKE_CURRENT_SOURCE_DIR}/builtin_families.cpp.in
+                 ${CMAKE_CURRENT_BINARY_DIR}/builtin_families.cpp @ONLY)
+  add_library(playerkit_family_registry ${CMAKE_CURRENT_BINARY_DIR}/builtin_families.cpp)
+  target_include_directories(playerkit_family_registry PUBLIC ${PROJECT_SOURCE_DIR}/lib)
+  target_link_libraries(playerkit_family_registry PUBLIC playerkit_families ${targets} PRIVATE playerkit_warnings)
+endfunction()

@@ -20,6 +20,7 @@ Daemon::Daemon(ServeOptions options) : options_(std::move(options)), logger_(opt
   logger_.set_level(options_.log_level);
   try {
     registry_ = load_drivers(options_.plugins, logger_);
+    for (const auto& spec : options_.extra_drivers) registry_.add(spec);
   } catch (const core::PluginError& e) {
     logger_.error(e.what());
     throw DaemonError(ServeResult::failed, e.what());

@@ -36,6 +36,9 @@ struct ServeOptions {
   std::string bind_address = "0.0.0.0";
   std::optional<std::string> auth_key;
   std::vector<std::string> plugins;
+  // Drivers beyond the built-in ones and the plugins' (those of a hardware
+  // family made in a test); they replace drivers of the same name.
+  std::vector<core::DriverSpec> extra_drivers;
   core::LogLevel log_level = core::LogLevel::kInfo;
   // -r: readlog devices replay this file and the server clock follows it.
   std::optional<std::string> readlog;

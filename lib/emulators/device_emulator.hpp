@@ -11,10 +11,13 @@
 
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "algorithms/geometry/pose2.hpp"
 
 namespace playerkit::emulators {
 
@@ -39,9 +42,6 @@ class DeviceEmulator {
   DeviceEmulator& operator=(const DeviceEmulator&) = delete;
   virtual ~DeviceEmulator() = default;
 
-  // "p2os", "sicklms200", "sickpls": what `player-drivers emulate` calls it.
-  [[nodiscard]] virtual std::string_view protocol_name() const = 0;
-
   // Bytes the host wrote, in arrival order, at time `now`. `host_baud` is
   // the line speed the host had set when it wrote them (from the pty's
   // termios), or 0 when unknown (TCP): an emulator that models baud rates
@@ -65,6 +65,10 @@ class DeviceEmulator {
 
   // The speed the device listens at now, 0 when it does not model baud rates.
   [[nodiscard]] virtual int baud() const { return 0; }
+
+  // A mobile base's true pose in the map, for the sensors that ride on it
+  // (EmulatorMount::robot); nullopt for devices that do not move.
+  [[nodiscard]] virtual std::optional<geometry::Pose2> world_pose() const { return std::nullopt; }
 
   // One line for logs and `--stats`: "Pioneer 3-DX, connected, 10 Hz SIPs".
   [[nodiscard]] virtual std::string describe() const = 0;

@@ -10,7 +10,7 @@ constexpr std::size_t kReadChunk = 4096;
 
 }  // namespace
 
-FramedReader::FramedReader(ByteLink& link, const hardware::FrameFormat& format, std::size_t max_telegram)
+FramedReader::FramedReader(ByteLink& link, const framing::FrameFormat& format, std::size_t max_telegram)
     : link_(link), format_(format), max_telegram_(std::max<std::size_t>(max_telegram, 1)) {}
 
 std::optional<std::vector<std::uint8_t>> FramedReader::next(Deadline deadline) {
@@ -32,12 +32,12 @@ std::optional<std::vector<std::uint8_t>> FramedReader::next(Deadline deadline) {
 
 FramedReader::Verdict FramedReader::judge_front(std::optional<std::vector<std::uint8_t>>& telegram) {
   const auto view = std::span<const std::uint8_t>(buffer_).subspan(start_);
-  const hardware::FrameScan scan = format_.scan(view);
+  const framing::FrameScan scan = format_.scan(view);
   // A format answering with a size it cannot have seen is broken; treating
   // its front byte as noise keeps the reader moving.
   const bool size_fits = scan.length >= 1 && scan.length <= view.size();
   switch (scan.kind) {
-    case hardware::FrameScan::Kind::frame:
+    case framing::FrameScan::Kind::frame:
       if (!size_fits) break;
       telegram.emplace(view.begin(), view.begin() + static_cast<std::ptrdiff_t>(scan.length));
       start_ += scan.length;
@@ -45,7 +45,7 @@ FramedReader::Verdict FramedReader::judge_front(std::optional<std::vector<std::u
       in_noise_ = false;
       link_.counters().telegrams.add();
       return Verdict::telegram;
-    case hardware::FrameScan::Kind::bad_checksum:
+    case framing::FrameScan::Kind::bad_checksum:
       if (!size_fits) break;
       link_.counters().checksum_errors.add();
       drop_front(1, false);
@@ -53,10 +53,10 @@ FramedReader::Verdict FramedReader::judge_front(std::optional<std::vector<std::u
       // counted again as a resync.
       in_noise_ = true;
       return Verdict::dropped;
-    case hardware::FrameScan::Kind::skip:
+    case framing::FrameScan::Kind::skip:
       drop_front(std::clamp<std::size_t>(scan.length, 1, view.size()), true);
       return Verdict::dropped;
-    case hardware::FrameScan::Kind::need_more:
+    case framing::FrameScan::Kind::need_more:
       if (scan.length > max_telegram_ || view.size() >= max_telegram_) break;  // a bogus length: never wait on it
       wanted_ = std::max(scan.length, view.size() + 1);
       return Verdict::need_more;

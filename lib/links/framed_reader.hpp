@@ -1,5 +1,5 @@
 #pragma once
-// Whole telegrams from a ByteLink, cut by a hardware::FrameFormat.
+// Whole telegrams from a ByteLink, cut by a framing::FrameFormat.
 //
 //   links::FramedReader reader(*link, p2os_format);
 //   while (auto telegram = reader.next(links::deadline_in(500ms))) handle(*telegram);
@@ -16,7 +16,7 @@
 #include <optional>
 #include <vector>
 
-#include "hardware/framing.hpp"
+#include "framing/frame_format.hpp"
 #include "links/byte_link.hpp"
 
 namespace playerkit::links {
@@ -25,7 +25,7 @@ class FramedReader {
  public:
   // Both must outlive the reader. `max_telegram`: the longest telegram the
   // protocol can send (P2OS 258 bytes, SICK LMS ~ 812).
-  FramedReader(ByteLink& link, const hardware::FrameFormat& format, std::size_t max_telegram = 4096);
+  FramedReader(ByteLink& link, const framing::FrameFormat& format, std::size_t max_telegram = 4096);
 
   // The next whole valid telegram, or nullopt when the deadline passes first
   // (counted as a timeout; a partial telegram stays buffered for the next
@@ -46,7 +46,7 @@ class FramedReader {
   void fill(std::size_t wanted_total, Deadline deadline, bool& timed_out);
 
   ByteLink& link_;
-  const hardware::FrameFormat& format_;
+  const framing::FrameFormat& format_;
   std::size_t max_telegram_;
   std::vector<std::uint8_t> buffer_;
   std::size_t start_ = 0;       // first unconsumed byte of buffer_

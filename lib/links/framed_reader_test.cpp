@@ -16,24 +16,24 @@ using namespace test_support;
 // A toy protocol for the reader: AA, N, N payload bytes, XOR of the payload.
 // `trusted_length` is the longest N it believes; the lax variant believes
 // anything, to see the reader protect itself from a corrupted length.
-class XorFormat final : public hardware::FrameFormat {
+class XorFormat final : public framing::FrameFormat {
  public:
   explicit XorFormat(std::size_t trusted_length = 32) : trusted_length_(trusted_length) {}
   [[nodiscard]] std::string_view name() const override { return "toy-xor"; }
-  [[nodiscard]] hardware::FrameScan scan(std::span<const std::uint8_t> buffered) const override {
+  [[nodiscard]] framing::FrameScan scan(std::span<const std::uint8_t> buffered) const override {
     if (buffered[0] != 0xAA) {
       std::size_t noise = 1;
       while (noise < buffered.size() && buffered[noise] != 0xAA) ++noise;
-      return hardware::FrameScan::noise(noise);
+      return framing::FrameScan::noise(noise);
     }
-    if (buffered.size() < 2) return hardware::FrameScan::need(2);
+    if (buffered.size() < 2) return framing::FrameScan::need(2);
     const std::size_t payload = buffered[1];
-    if (payload > trusted_length_) return hardware::FrameScan::noise(1);
+    if (payload > trusted_length_) return framing::FrameScan::noise(1);
     const std::size_t size = payload + 3;
-    if (buffered.size() < size) return hardware::FrameScan::need(size);
+    if (buffered.size() < size) return framing::FrameScan::need(size);
     std::uint8_t check = 0;
     for (std::size_t i = 2; i < size - 1; ++i) check ^= buffered[i];
-    return check == buffered[size - 1] ? hardware::FrameScan::whole(size) : hardware::FrameScan::corrupt(size);
+    return check == buffered[size - 1] ? framing::FrameScan::whole(size) : framing::FrameScan::corrupt(size);
   }
 
  private:
@@ -41,11 +41,11 @@ class XorFormat final : public hardware::FrameFormat {
 };
 
 // Never decides: the reader must still bound its buffer.
-class UndecidedFormat final : public hardware::FrameFormat {
+class UndecidedFormat final : public framing::FrameFormat {
  public:
   [[nodiscard]] std::string_view name() const override { return "undecided"; }
-  [[nodiscard]] hardware::FrameScan scan(std::span<const std::uint8_t>) const override {
-    return hardware::FrameScan::need();
+  [[nodiscard]] framing::FrameScan scan(std::span<const std::uint8_t>) const override {
+    return framing::FrameScan::need();
   }
 };
 

@@ -70,8 +70,12 @@ TEST(FuzzReplay, CarmenLogReader) { replay("carmen_log_reader", playerkit::fuzz:
 TEST(FuzzReplay, MapYaml) { replay("map_yaml", playerkit::fuzz::map_yaml); }
 TEST(FuzzReplay, MapImage) { replay("map_image", playerkit::fuzz::map_image); }
 TEST(FuzzReplay, WorldFile) { replay("world_file", playerkit::fuzz::world_file); }
+#ifdef PLAYERKIT_FUZZ_P2OS_SIP
 TEST(FuzzReplay, P2osSip) { replay("p2os_sip", playerkit::fuzz::p2os_sip); }
+#endif
+#ifdef PLAYERKIT_FUZZ_SICK_TELEGRAM
 TEST(FuzzReplay, SickTelegram) { replay("sick_telegram", playerkit::fuzz::sick_telegram); }
+#endif
 TEST(FuzzReplay, JsonLine) { replay("json_line", playerkit::fuzz::json_line); }
 TEST(FuzzReplay, LogInput) { replay("log_input", playerkit::fuzz::log_input); }
 

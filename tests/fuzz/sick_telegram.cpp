@@ -11,12 +11,12 @@
 #include "fuzz_support.hpp"
 #include "fuzz_targets.hpp"
 #include "frame_stream.hpp"
-#include "hardware/sick/codes.hpp"
-#include "hardware/sick/frame_format.hpp"
-#include "hardware/sick/replies.hpp"
-#include "hardware/sick/requests.hpp"
-#include "hardware/sick/scan.hpp"
-#include "hardware/sick/telegram.hpp"
+#include "families/sick/protocol/codes.hpp"
+#include "families/sick/protocol/frame_format.hpp"
+#include "families/sick/protocol/replies.hpp"
+#include "families/sick/protocol/requests.hpp"
+#include "families/sick/protocol/scan.hpp"
+#include "families/sick/protocol/telegram.hpp"
 
 namespace playerkit::fuzz {
 namespace sick_telegram_detail {

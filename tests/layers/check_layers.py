@@ -5,7 +5,9 @@ docs/architecture.md (the fenced block after the line `<!-- layers -->`).
 Each line of that block is a layer, highest first. Its folders are the words
 at the start of the line that begin with lib/ or tools/; the rest of the line
 describes them. `lib/x/<name>` stands for every subfolder of lib/x that has no
-line of its own, each one independent of the others. A file of folder F may
+line of its own, each one independent of the others; `lib/x/<name>/part`
+for the folder `part` of each of them, and library code of one `<name>`
+never includes another's, whatever their lines. A file of folder F may
 include:
   * headers of F itself (F owns its subfolders unless they have lines of
     their own), and headers of folders on lower lines;
@@ -67,18 +69,23 @@ def is_test_code(path: pathlib.Path) -> bool:
 class Layers:
     def __init__(self, root: pathlib.Path, layer_lines):
         self.root = root
-        # folder (relative to root, e.g. "lib/drivers/p2os") -> layer index (0 = highest)
+        # folder (relative to root, e.g. "lib/families/p2os/driver") -> layer index (0 = highest)
         self.level = {}
         self.line_of = {}
+        # folder -> (parent, name) for folders placed through lib/x/<name>...:
+        # library code of one member never includes another member's.
+        self.member_of = {}
         explicit = {f for _, folders in layer_lines for f in folders if "<" not in f}
         for index, (line_number, folders) in enumerate(layer_lines):
             for folder in folders:
                 if "<" in folder:
-                    parent = folder.split("/<")[0]
+                    parent, pattern = folder.split("/<", 1)
+                    suffix = pattern.split(">", 1)[1]  # "" or "/driver" after lib/families/<name>
                     for sub in sorted((root / parent).iterdir()) if (root / parent).is_dir() else []:
-                        relative = f"{parent}/{sub.name}"
-                        if sub.is_dir() and relative not in explicit:
+                        relative = f"{parent}/{sub.name}{suffix}"
+                        if sub.is_dir() and (root / relative).is_dir() and relative not in explicit:
                             self._place(relative, index, line_number)
+                            self.member_of[relative] = (parent, sub.name)
                 else:
                     self._place(folder, index, line_number)
 
@@ -129,6 +136,14 @@ def check(root: pathlib.Path, architecture: pathlib.Path):
                                 f"{architecture.name} places")
                 continue
             if target == owner:
+                continue
+            owner_member = layers.member_of.get(owner)
+            target_member = layers.member_of.get(target)
+            if (not test_code and owner_member and target_member and owner_member[0] == target_member[0]
+                    and owner_member[1] != target_member[1] and layers.level[target] != layers.level[owner]):
+                findings.append(f"{relative}:{number}: {owner} includes \"{included}\" from {target}: "
+                                f"{owner_member[0]}/{owner_member[1]} and {target_member[0]}/{target_member[1]} "
+                                f"are independent")
                 continue
             if layers.level[target] > layers.level[owner]:
                 continue

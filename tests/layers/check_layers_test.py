@@ -104,5 +104,42 @@ class CheckLayersTest(unittest.TestCase):
             self.tree.findings()
 
 
+class MemberParts(unittest.TestCase):
+    DIAGRAM = """# Architecture
+
+<!-- layers -->
+```
+lib/fam/<name>            a member's top
+lib/fam/<name>/driver     a member's driver
+lib/fam/<name>/protocol   a member's bytes
+```
+"""
+
+    def test_parts_of_a_member_follow_their_lines(self):
+        with tempfile.TemporaryDirectory() as directory:
+            tree = LayerTree(directory, self.DIAGRAM)
+            tree.write("lib/fam/a/protocol/bytes.hpp")
+            tree.write("lib/fam/a/driver/driver.hpp", "fam/a/protocol/bytes.hpp")
+            tree.write("lib/fam/a/spec.hpp", "fam/a/driver/driver.hpp")
+            self.assertEqual(tree.findings(), [])
+            tree.write("lib/fam/a/protocol/up.hpp", "fam/a/driver/driver.hpp")
+            findings = tree.findings()
+            self.assertEqual(len(findings), 1, findings)
+            self.assertIn("lib/fam/a/protocol/up.hpp:2", findings[0])
+
+    def test_one_member_never_includes_another(self):
+        with tempfile.TemporaryDirectory() as directory:
+            tree = LayerTree(directory, self.DIAGRAM)
+            tree.write("lib/fam/b/protocol/bytes.hpp")
+            tree.write("lib/fam/a/driver/driver.hpp", "fam/b/protocol/bytes.hpp")
+            findings = tree.findings()
+            self.assertEqual(len(findings), 1, findings)
+            self.assertIn("lib/fam/a and lib/fam/b are independent", findings[0])
+            # Test code may use another member (a robot carrying another family's sensor).
+            tree.write("lib/fam/a/driver/driver.hpp")
+            tree.write("lib/fam/a/driver/rig_test.cpp", "fam/b/protocol/bytes.hpp")
+            self.assertEqual(tree.findings(), [])
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -25,25 +25,25 @@ emulators::Endpoint endpoint_of(const EndpointArgument& argument) {
 
 }  // namespace
 
-EmulateOptions make_emulate_options(const EmulateCommandLine& command_line) {
+EmulateOptions make_emulate_options(const EmulateCommandLine& command_line, const emulators::EmulatorCatalog& catalog) {
   EmulateOptions options;
   for (const std::string& word : command_line.words) {
     const std::size_t equals = word.find('=');
     if (equals == std::string::npos) {
-      if (!emulators::find_emulator_kind(word)) {
-        throw UsageError("no emulator '" + word + "'; there are " + emulators::emulator_names());
+      if (!catalog.find(word)) {
+        throw UsageError("no emulator '" + word + "'; there are " + catalog.names());
       }
       options.requests.push_back({word, {}, emulators::PtyEndpoint{}});
       continue;
     }
     if (options.requests.empty()) {
-      throw UsageError("'" + word + "': name the emulator first, then its KEY=VALUE options (e.g. p2os model=p3at)");
+      throw UsageError("'" + word + "': name the emulator first, then its KEY=VALUE options (NAME KEY=VALUE ...)");
     }
     if (equals == 0) throw UsageError("'" + word + "': an option needs a name before '='");
     options.requests.back().options.emplace_back(word.substr(0, equals), word.substr(equals + 1));
   }
   if (options.requests.empty()) {
-    throw UsageError("emulate: name an emulator: " + emulators::emulator_names());
+    throw UsageError("emulate: name an emulator: " + catalog.names());
   }
   if (command_line.endpoints.size() > options.requests.size()) {
     throw UsageError("emulate: " + std::to_string(command_line.endpoints.size()) + " --link/--tcp for " +

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "drivers_exit_status.hpp"
+#include "emulators/catalog/emulator_catalog.hpp"
 #include "emulators/catalog/emulator_rig.hpp"
 #include "emulators/runner/fault_plan.hpp"
 
@@ -42,7 +43,7 @@ struct EmulateOptions {
   std::optional<double> duration;  // seconds; unset: until a signal
 };
 
-// Throws UsageError.
-EmulateOptions make_emulate_options(const EmulateCommandLine& command_line);
+// Names are checked against `catalog`. Throws UsageError.
+EmulateOptions make_emulate_options(const EmulateCommandLine& command_line, const emulators::EmulatorCatalog& catalog);
 
 }  // namespace playerkit::player_drivers

@@ -61,8 +61,8 @@ std::shared_ptr<const grid::OccupancyGrid> load_emulator_map(const EmulateOption
                    beside.filename().string() + " beside it)");
 }
 
-int run_emulators(const EmulateOptions& options, std::ostream& out, std::ostream& err,
-                  const std::function<bool()>& stop_requested) {
+int run_emulators(const EmulateOptions& options, const emulators::EmulatorCatalog& catalog, std::ostream& out,
+                  std::ostream& err, const std::function<bool()>& stop_requested) {
   std::shared_ptr<const grid::OccupancyGrid> map;
   if (options.map) {
     std::string how;
@@ -82,7 +82,7 @@ int run_emulators(const EmulateOptions& options, std::ostream& out, std::ostream
 
   std::unique_ptr<emulators::EmulatorRig> rig;
   try {
-    rig = std::make_unique<emulators::EmulatorRig>(options.requests,
+    rig = std::make_unique<emulators::EmulatorRig>(catalog, options.requests,
                                                    emulators::RigSettings{.map = map, .faults = options.faults});
   } catch (const std::invalid_argument& e) {
     err << "player-drivers: emulate: " << e.what() << "\n" << std::flush;

@@ -26,7 +26,7 @@ std::shared_ptr<const grid::OccupancyGrid> load_emulator_map(const EmulateOption
 
 // Returns 0 after a stop or --duration; 1 when a line or the map cannot be
 // had; 2 for an option an emulator refuses.
-int run_emulators(const EmulateOptions& options, std::ostream& out, std::ostream& err,
-                  const std::function<bool()>& stop_requested);
+int run_emulators(const EmulateOptions& options, const emulators::EmulatorCatalog& catalog, std::ostream& out,
+                  std::ostream& err, const std::function<bool()>& stop_requested);
 
 }  // namespace playerkit::player_drivers

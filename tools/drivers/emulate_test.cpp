@@ -9,6 +9,7 @@
 
 #include "emulate_options.hpp"
 #include "emulate_session.hpp"
+#include "families/builtin_families.hpp"
 #include "links/open_link.hpp"
 
 namespace playerkit::player_drivers {
@@ -24,16 +25,25 @@ std::string usage_error_of(Make make) {
   return "";
 }
 
+// The built-in families' emulators; these tests use the p2os and sick ones.
+const emulators::EmulatorCatalog& catalog() {
+  static const auto built = families::builtin_families().emulator_catalog();
+  return built;
+}
+
+bool pioneer_and_sick_built() { return catalog().find("p2os") && catalog().find("sicklms200"); }
+
 std::filesystem::path scratch(const std::string& name) {
   return std::filesystem::temp_directory_path() / ("player_drivers_emulate_test_" + std::to_string(::getpid()) + "_" + name);
 }
 
 TEST(EmulateOptions, NamesTakeTheOptionsAfterThemAndTheLinesInOrder) {
+  if (!pioneer_and_sick_built()) GTEST_SKIP() << "the p2os and sick families are left out of this build";
   EmulateCommandLine line;
   line.words = {"p2os", "model=p3at", "baud=38400", "sicklms200", "mount=0.1,0,0"};
   line.endpoints = {{EndpointArgument::Kind::tcp, "0"}, {EndpointArgument::Kind::link, "/tmp/laser"}};
   line.faults = {"bad-checksum=0.5", "seed=3"};
-  const EmulateOptions options = make_emulate_options(line);
+  const EmulateOptions options = make_emulate_options(line, catalog());
   ASSERT_EQ(options.requests.size(), 2u);
   EXPECT_EQ(options.requests[0].name, "p2os");
   EXPECT_EQ(options.requests[0].options,
@@ -45,28 +55,29 @@ TEST(EmulateOptions, NamesTakeTheOptionsAfterThemAndTheLinesInOrder) {
 }
 
 TEST(EmulateOptions, Refusals) {
+  if (!pioneer_and_sick_built()) GTEST_SKIP() << "the p2os and sick families are left out of this build";
   EmulateCommandLine line;
   line.words = {"model=p3at", "p2os"};
-  EXPECT_EQ(usage_error_of([&] { make_emulate_options(line); }),
-            "'model=p3at': name the emulator first, then its KEY=VALUE options (e.g. p2os model=p3at)");
+  EXPECT_EQ(usage_error_of([&] { make_emulate_options(line, catalog()); }),
+            "'model=p3at': name the emulator first, then its KEY=VALUE options (NAME KEY=VALUE ...)");
   line.words = {"lms200"};
-  EXPECT_EQ(usage_error_of([&] { make_emulate_options(line); }),
-            "no emulator 'lms200'; there are p2os, sicklms200, sickpls");
+  EXPECT_EQ(usage_error_of([&] { make_emulate_options(line, catalog()); }),
+            "no emulator 'lms200'; there are " + catalog().names());
   line.words = {"p2os"};
   line.endpoints = {{EndpointArgument::Kind::link, "/tmp/a"}, {EndpointArgument::Kind::link, "/tmp/b"}};
-  EXPECT_EQ(usage_error_of([&] { make_emulate_options(line); }),
+  EXPECT_EQ(usage_error_of([&] { make_emulate_options(line, catalog()); }),
             "emulate: 2 --link/--tcp for 1 emulator(s): give one per emulator, in order");
   line.endpoints = {{EndpointArgument::Kind::tcp, "http"}};
-  EXPECT_EQ(usage_error_of([&] { make_emulate_options(line); }), "--tcp 'http': a port number is 0 (any free port) to 65535");
+  EXPECT_EQ(usage_error_of([&] { make_emulate_options(line, catalog()); }), "--tcp 'http': a port number is 0 (any free port) to 65535");
   line.endpoints.clear();
   line.faults = {"explode=1"};
-  EXPECT_EQ(usage_error_of([&] { make_emulate_options(line); }).substr(0, 18), "--fault explode=1:");
+  EXPECT_EQ(usage_error_of([&] { make_emulate_options(line, catalog()); }).substr(0, 18), "--fault explode=1:");
   line.faults.clear();
   line.map_scale = 0.05;
-  EXPECT_EQ(usage_error_of([&] { make_emulate_options(line); }), "--map-scale is the scale of --map's image: it needs --map");
+  EXPECT_EQ(usage_error_of([&] { make_emulate_options(line, catalog()); }), "--map-scale is the scale of --map's image: it needs --map");
   line.map = "world.png";
   line.map_scale = -1;
-  EXPECT_EQ(usage_error_of([&] { make_emulate_options(line); }), "--map-scale must be a positive number of metres per pixel");
+  EXPECT_EQ(usage_error_of([&] { make_emulate_options(line, catalog()); }), "--map-scale must be a positive number of metres per pixel");
 }
 
 TEST(EmulateMap, AnImageIsReadThroughTheYamlBesideItOrAtItsScale) {
@@ -91,11 +102,12 @@ TEST(EmulateMap, AnImageIsReadThroughTheYamlBesideItOrAtItsScale) {
 }
 
 TEST(EmulateSession, PrintsWhereEachEmulatorIsThenRunsUntilStopped) {
+  if (!pioneer_and_sick_built()) GTEST_SKIP() << "the p2os and sick families are left out of this build";
   EmulateCommandLine line;
   line.words = {"p2os", "sickpls"};
   const auto link = scratch("robot");
   line.endpoints = {{EndpointArgument::Kind::link, link.string()}};
-  const EmulateOptions options = make_emulate_options(line);
+  const EmulateOptions options = make_emulate_options(line, catalog());
   std::ostringstream out, err;
   std::atomic<bool> stop{false};
   std::atomic<bool> link_seen{false};
@@ -106,7 +118,7 @@ TEST(EmulateSession, PrintsWhereEachEmulatorIsThenRunsUntilStopped) {
     if (link_seen) links::open_link(link.string(), {.baud = 9600});
     stop = true;
   });
-  const int status = run_emulators(options, out, err, [&] { return stop.load(); });
+  const int status = run_emulators(options, catalog(), out, err, [&] { return stop.load(); });
   watcher.join();
   EXPECT_EQ(status, kExitOk);
   EXPECT_TRUE(link_seen);
@@ -121,27 +133,29 @@ TEST(EmulateSession, PrintsWhereEachEmulatorIsThenRunsUntilStopped) {
 }
 
 TEST(EmulateSession, StatsEverySecondAndDuration) {
+  if (!pioneer_and_sick_built()) GTEST_SKIP() << "the p2os and sick families are left out of this build";
   EmulateCommandLine line;
   line.words = {"sicklms200"};
   line.stats = true;
   line.duration = 1.2;
   std::ostringstream out, err;
-  EXPECT_EQ(run_emulators(make_emulate_options(line), out, err, [] { return false; }), kExitOk);
+  EXPECT_EQ(run_emulators(make_emulate_options(line, catalog()), catalog(), out, err, [] { return false; }), kExitOk);
   EXPECT_NE(err.str().find("stats sicklms200 /dev/pts/"), std::string::npos) << err.str();
   EXPECT_NE(err.str().find(": in 0 B, out 0 B, 0 telegrams"), std::string::npos) << err.str();
 }
 
 TEST(EmulateSession, RefusesABadOptionOrAnOccupiedPath) {
+  if (!pioneer_and_sick_built()) GTEST_SKIP() << "the p2os and sick families are left out of this build";
   std::ostringstream out, err;
   EmulateCommandLine line;
   line.words = {"sicklms200", "noise=loud"};
-  EXPECT_EQ(run_emulators(make_emulate_options(line), out, err, [] { return true; }), kExitUsage);
+  EXPECT_EQ(run_emulators(make_emulate_options(line, catalog()), catalog(), out, err, [] { return true; }), kExitUsage);
   EXPECT_NE(err.str().find("sicklms200: noise=loud: expected a number"), std::string::npos) << err.str();
   const auto occupied = scratch("occupied");
   std::ofstream(occupied).put('x');
   line.words = {"sicklms200"};
   line.endpoints = {{EndpointArgument::Kind::link, occupied.string()}};
-  EXPECT_EQ(run_emulators(make_emulate_options(line), out, err, [] { return true; }), kExitFailure);
+  EXPECT_EQ(run_emulators(make_emulate_options(line, catalog()), catalog(), out, err, [] { return true; }), kExitFailure);
   std::filesystem::remove(occupied);
   EXPECT_TRUE(out.str().empty()) << out.str();
 }

@@ -7,7 +7,7 @@
 
 #include "driver_listing.hpp"
 #include "drivers_exit_status.hpp"
-#include "port_probe.hpp"
+#include "families/port_probe.hpp"
 
 namespace playerkit::player_drivers {
 
@@ -29,7 +29,7 @@ struct ProbeCommandLine {
 struct ProbeOptions {
   std::vector<std::string> ports;
   bool json = false;
-  ProbeSettings settings;  // progress is left for the caller to set with -v
+  families::ProbeSettings settings;  // progress is left for the caller to set with -v
   bool verbose = false;
 };
 

@@ -7,7 +7,7 @@ namespace playerkit::player_drivers {
 RunOptions make_run_options(const RunCommandLine& command_line) {
   RunOptions options;
   if (command_line.words.empty()) {
-    throw UsageError("run: name a driver (player-drivers list shows them) or a family such as p2os");
+    throw UsageError("run: name a driver (player-drivers list shows them) or a family of drivers served together");
   }
   options.plan.name = command_line.words.front();
   if (options.plan.name.find('=') != std::string::npos) {

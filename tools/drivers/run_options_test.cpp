@@ -35,7 +35,7 @@ TEST(RunOptions, NameThenOptions) {
 }
 
 TEST(RunOptions, NeedsANameFirst) {
-  EXPECT_EQ(usage_error_of(line_of({})), "run: name a driver (player-drivers list shows them) or a family such as p2os");
+  EXPECT_EQ(usage_error_of(line_of({})), "run: name a driver (player-drivers list shows them) or a family of drivers served together");
   EXPECT_EQ(usage_error_of(line_of({"port=/dev/ttyS0", "sicklms200"})),
             "run: the driver's name comes first, then its OPTION=VALUE pairs (got 'port=/dev/ttyS0')");
   EXPECT_EQ(usage_error_of(line_of({"null", "fast"})), "'fast' is not OPTION=VALUE (e.g. port=/dev/ttyUSB0)");

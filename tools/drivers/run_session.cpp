@@ -19,6 +19,7 @@
 #include "line_streams.hpp"
 #include "outgoing_message.hpp"
 #include "sender.hpp"
+#include "known_drivers.hpp"
 #include "telegram_trace.hpp"
 #include "usage_error.hpp"
 
@@ -248,13 +249,14 @@ int feed_and_dump(const Served& served, const RunOptions& options, const RunStre
 }
 
 // --trace on the first device of each link that has one.
-void install_traces(const RunPlan& plan, const std::vector<core::Device*>& devices, SharedLines& err) {
+void install_traces(const RunPlan& plan, const families::FamilyRegistry& families,
+                    const std::vector<core::Device*>& devices, SharedLines& err) {
   bool any = false;
   for (std::size_t i = 0; i < devices.size(); ++i) {
     const core::DriverSpec& spec = *plan.devices[i].spec;
     // A family's devices share one link: it is traced under the family's name.
     const std::string label = plan.family ? plan.name : protocol::to_string(plan.devices[i].address);
-    auto trace = telegram_trace(label, framing_for_family(spec.family),
+    auto trace = telegram_trace(label, families.framing(spec.family),
                                 [&err](std::string_view line) { err.write_line(line); });
     if (devices[i]->driver().set_byte_trace(std::move(trace))) {
       any = true;
@@ -308,7 +310,8 @@ RunPlan plan_run(const core::DriverRegistry& registry, const RunOptions& options
 
 }  // namespace
 
-int run_driver(const RunOptions& options, const RunStreams& streams, const std::function<bool()>& stop_requested) {
+int run_driver(const RunOptions& options, const families::FamilyRegistry& families, const RunStreams& streams,
+               const std::function<bool()>& stop_requested) {
   SharedLines out(streams.out);
   SharedLines err(streams.err);
 
@@ -319,7 +322,7 @@ int run_driver(const RunOptions& options, const RunStreams& streams, const std::
   });
   core::DriverRegistry registry;
   try {
-    registry = daemon::load_drivers(options.plugins, loader_log);
+    registry = known_drivers(options.plugins, families, loader_log);
   } catch (const std::exception& e) {
     err.write_line(std::string("player-drivers: ") + e.what());
     return kExitFailure;
@@ -341,6 +344,7 @@ int run_driver(const RunOptions& options, const RunStreams& streams, const std::
   serve.port = options.serve_port.value_or(0);
   serve.bind_address = options.bind_address;
   serve.plugins = options.plugins;
+  serve.extra_drivers = drivers_brought_by(families);
   serve.log_level = options.verbose ? core::LogLevel::kInfo : core::LogLevel::kWarning;
 
   DaemonLog log(plan, err);
@@ -376,7 +380,7 @@ int run_driver(const RunOptions& options, const RunStreams& streams, const std::
                       served.read_devices.end();
     if (read || served.read_devices.empty()) monitored.push_back({device, plan.family ? plan.name : std::string()});
   }
-  if (options.trace) install_traces(plan, devices, err);
+  if (options.trace) install_traces(plan, families, devices, err);
   try {
     daemon->start();
   } catch (const daemon::DaemonError&) {

@@ -6,11 +6,13 @@
 // a writelog device, --stats and --trace from the devices themselves.
 //
 //   RunOptions options = make_run_options(command_line);
-//   return run_driver(options, {std::cout, std::cerr, STDIN_FILENO}, [] { return stop_signal != 0; });
+//   return run_driver(options, families::builtin_families(), {std::cout, std::cerr, STDIN_FILENO},
+//                     [] { return stop_signal != 0; });
 
 #include <functional>
 #include <ostream>
 
+#include "families/family_registry.hpp"
 #include "run_options.hpp"
 
 namespace playerkit::player_drivers {
@@ -28,7 +30,9 @@ inline constexpr const char* kGeneratedConfigName = "<player-drivers run>";
 // Returns the exit status (drivers_exit_status.hpp): 0 done; 1 the daemon,
 // a device or the connection failed; 2 an unknown driver or an option it
 // refuses (named as typed); with --req (and --stdin) 3 NACK, 4 ERR.
-// `stop_requested` is polled at least every 100 ms.
-int run_driver(const RunOptions& options, const RunStreams& streams, const std::function<bool()>& stop_requested);
+// `families` gives --trace its framing and adds the drivers a family brings
+// beyond the built-in list. `stop_requested` is polled at least every 100 ms.
+int run_driver(const RunOptions& options, const families::FamilyRegistry& families, const RunStreams& streams,
+               const std::function<bool()>& stop_requested);
 
 }  // namespace playerkit::player_drivers

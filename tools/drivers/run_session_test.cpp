@@ -15,6 +15,7 @@
 #include "client/client.hpp"
 #include "daemon/serve.hpp"
 #include "emulators/catalog/emulator_catalog.hpp"
+#include "families/builtin_families.hpp"
 #include "emulators/runner/emulator_runner.hpp"
 #include "protocol/interfaces.hpp"
 
@@ -92,7 +93,7 @@ RunCommandLine line_of(std::vector<std::string> words) {
 Outcome run(const RunCommandLine& line, int input_fd = -1, const std::function<bool()>& stop = [] { return false; }) {
   Capture out, err;
   Outcome outcome;
-  outcome.status = run_driver(make_run_options(line), {out.stream(), err.stream(), input_fd}, stop);
+  outcome.status = run_driver(make_run_options(line), families::builtin_families(), {out.stream(), err.stream(), input_fd}, stop);
   outcome.out = out.text();
   outcome.err = err.text();
   return outcome;
@@ -252,7 +253,7 @@ TEST(RunSession, ServeLetsOtherClientsIn) {
   Capture out, err;
   std::atomic<bool> stop{false};
   std::thread runner([&] {
-    run_driver(make_run_options(line), {out.stream(), err.stream(), -1}, [&] { return stop.load(); });
+    run_driver(make_run_options(line), families::builtin_families(), {out.stream(), err.stream(), -1}, [&] { return stop.load(); });
   });
   std::uint16_t port = 0;
   for (int i = 0; i < 200 && port == 0; ++i) {
@@ -273,7 +274,7 @@ TEST(RunSession, ServeLetsOtherClientsIn) {
 
 TEST(RunSession, ALaserOnAnEmulatorWhenTheDriverIsBuilt) {
   if (!registered("sicklms200")) GTEST_SKIP() << "sicklms200 is not built yet";
-  emulators::EmulatorRunner laser(emulators::make_emulator("sicklms200", {}), emulators::PtyEndpoint{});
+  emulators::EmulatorRunner laser(families::builtin_families().emulator_catalog().make("sicklms200", {}), emulators::PtyEndpoint{});
   auto line = line_of({"sicklms200", "port=" + laser.device_path()});
   line.count = 2;
   line.format = "json";
@@ -305,7 +306,7 @@ TEST(RunSession, ADriverThatCannotSetUpSaysWhyOnce) {
 
 TEST(RunSession, APioneerFamilyOnAnEmulatorWhenItsDriversAreBuilt) {
   if (!registered("p2os_position")) GTEST_SKIP() << "the p2os drivers are not built yet";
-  emulators::EmulatorRunner robot(emulators::make_emulator("p2os", {}), emulators::PtyEndpoint{});
+  emulators::EmulatorRunner robot(families::builtin_families().emulator_catalog().make("p2os", {}), emulators::PtyEndpoint{});
   auto line = line_of({"p2os", "port=" + robot.device_path()});
   line.device = "position:0";
   line.count = 2;

@@ -4,9 +4,6 @@
 #include <mutex>
 #include <utility>
 
-#include "hardware/p2os/frame.hpp"
-#include "hardware/p2os/frame_format.hpp"
-#include "hardware/sick/frame_format.hpp"
 #include "links/trace_format.hpp"
 
 namespace playerkit::player_drivers {
@@ -31,7 +28,7 @@ void add_noise(std::vector<TracePiece>& pieces, std::vector<std::uint8_t> bytes)
 
 }  // namespace
 
-TelegramSplitter::TelegramSplitter(std::shared_ptr<const hardware::FrameFormat> format) : format_(std::move(format)) {}
+TelegramSplitter::TelegramSplitter(std::shared_ptr<const framing::FrameFormat> format) : format_(std::move(format)) {}
 
 std::vector<TracePiece> TelegramSplitter::feed(std::span<const std::uint8_t> bytes) {
   std::vector<TracePiece> pieces;
@@ -41,12 +38,12 @@ std::vector<TracePiece> TelegramSplitter::feed(std::span<const std::uint8_t> byt
   }
   buffer_.insert(buffer_.end(), bytes.begin(), bytes.end());
   while (!buffer_.empty()) {
-    const hardware::FrameScan scan = format_->scan(buffer_);
+    const framing::FrameScan scan = format_->scan(buffer_);
     const std::size_t length = std::min(scan.length, buffer_.size());
-    if (scan.kind == hardware::FrameScan::Kind::need_more) break;
-    if (scan.kind == hardware::FrameScan::Kind::frame) {
+    if (scan.kind == framing::FrameScan::Kind::need_more) break;
+    if (scan.kind == framing::FrameScan::Kind::frame) {
       pieces.push_back({Kind::telegram, take_front(buffer_, length)});
-    } else if (scan.kind == hardware::FrameScan::Kind::bad_checksum) {
+    } else if (scan.kind == framing::FrameScan::Kind::bad_checksum) {
       pieces.push_back({Kind::bad_checksum, take_front(buffer_, length)});
     } else {
       add_noise(pieces, take_front(buffer_, std::max<std::size_t>(1, length)));
@@ -61,24 +58,10 @@ std::vector<TracePiece> TelegramSplitter::flush() {
   return pieces;
 }
 
-FamilyFraming framing_for_family(std::string_view family) {
-  namespace p2os = hardware::p2os;
-  namespace sick = hardware::sick;
-  if (family == "p2os") {
-    return {std::make_shared<p2os::P2osFrameFormat>(p2os::kMaxLengthByteToRobot),
-            std::make_shared<p2os::P2osFrameFormat>(p2os::kMaxLengthByteFromRobot)};
-  }
-  if (family == "sick") {
-    return {std::make_shared<sick::SickFrameFormat>(sick::SickFrameFormat::requests()),
-            std::make_shared<sick::SickFrameFormat>(sick::SickFrameFormat::replies())};
-  }
-  return {};
-}
-
-core::ByteTrace telegram_trace(std::string label, FamilyFraming framing,
+core::ByteTrace telegram_trace(std::string label, families::TraceFraming framing,
                                std::function<void(std::string_view line)> sink) {
   struct State {
-    State(std::string label_text, std::function<void(std::string_view)> line_sink, FamilyFraming formats)
+    State(std::string label_text, std::function<void(std::string_view)> line_sink, families::TraceFraming formats)
         : label(std::move(label_text)),
           sink(std::move(line_sink)),
           outgoing(std::move(formats.outgoing)),

@@ -19,7 +19,8 @@
 #include <vector>
 
 #include "core/driver.hpp"
-#include "hardware/framing.hpp"
+#include "families/family_spec.hpp"
+#include "framing/frame_format.hpp"
 
 namespace playerkit::player_drivers {
 
@@ -35,27 +36,19 @@ struct TracePiece {
 // per run. Pure.
 class TelegramSplitter {
  public:
-  explicit TelegramSplitter(std::shared_ptr<const hardware::FrameFormat> format);
+  explicit TelegramSplitter(std::shared_ptr<const framing::FrameFormat> format);
   std::vector<TracePiece> feed(std::span<const std::uint8_t> bytes);
   // Whatever is left (an unfinished telegram), as noise.
   std::vector<TracePiece> flush();
 
  private:
-  std::shared_ptr<const hardware::FrameFormat> format_;
+  std::shared_ptr<const framing::FrameFormat> format_;
   std::vector<std::uint8_t> buffer_;
 };
 
-// The frame formats of a driver family's telegrams, host -> device and
-// device -> host; null for families without one here.
-struct FamilyFraming {
-  std::shared_ptr<const hardware::FrameFormat> outgoing;
-  std::shared_ptr<const hardware::FrameFormat> incoming;
-};
-FamilyFraming framing_for_family(std::string_view family);
-
 // A core::ByteTrace printing lines through `sink` (called under a lock, one
 // line at a time, no newline), labelled `label`, times from the trace's creation.
-core::ByteTrace telegram_trace(std::string label, FamilyFraming framing,
+core::ByteTrace telegram_trace(std::string label, families::TraceFraming framing,
                                std::function<void(std::string_view line)> sink);
 
 }  // namespace playerkit::player_drivers

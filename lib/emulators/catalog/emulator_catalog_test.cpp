@@ -1,21 +1,76 @@
+// The catalog on its own, with toy kinds made here: names, order, refusals
+// and how options and the world reach a factory. What the real kinds accept
+// is tested with their family (lib/families/<name>/<name>_family_test.cpp).
+
 #include "emulators/catalog/emulator_catalog.hpp"
 
 #include <gtest/gtest.h>
 
-#include <chrono>
-#include <cmath>
-#include <numbers>
+#include <memory>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
-#include "emulators/p2os/p2os_robot_emulator.hpp"
-#include "emulators/sick/sick_lms200_emulator.hpp"
-#include "emulators/sick/sick_pls_emulator.hpp"
-#include "hardware/sick/requests.hpp"
+#include "emulators/emulator_option_reader.hpp"
 
 namespace playerkit::emulators {
 namespace emulator_catalog_test {
 
-using namespace std::chrono_literals;
+// A device that says nothing and keeps what its factory gave it.
+class ToyDevice final : public DeviceEmulator {
+ public:
+  ToyDevice(std::string kind, int level, std::string label, bool loud, const EmulatorWorld& world)
+      : kind_(std::move(kind)), level_(level), label_(std::move(label)), loud_(loud), world_(world) {}
+
+  void receive(std::span<const std::uint8_t>, Duration, int) override {}
+  void advance(Duration) override {}
+  [[nodiscard]] Duration next_deadline() const override { return Duration::max(); }
+  std::vector<Telegram> take_output() override { return {}; }
+  [[nodiscard]] std::string describe() const override { return kind_ + " " + label_; }
+
+  [[nodiscard]] const std::string& kind() const { return kind_; }
+  [[nodiscard]] int level() const { return level_; }
+  [[nodiscard]] const std::string& label() const { return label_; }
+  [[nodiscard]] bool loud() const { return loud_; }
+  [[nodiscard]] const EmulatorWorld& world() const { return world_; }
+
+ private:
+  std::string kind_;
+  int level_;
+  std::string label_;
+  bool loud_;
+  EmulatorWorld world_;
+};
+
+// A kind of toy with the options level, label and loud. Its factory refuses
+// level 7 in words of its own (not naming the kind), level 8 in words that
+// name it already, and level 9 with an error that is no std::invalid_argument.
+EmulatorKind toy_kind(const std::string& name) {
+  return {
+      .name = name,
+      .summary = "a toy " + name,
+      .interface_name = "comms",
+      .driver = name + "_driver",
+      .mount = EmulatorMount::standalone,
+      .options =
+          {
+              {"level", "3", "how loud, 0 to 9"},
+              {"label", "toy", "what it calls itself"},
+              {"loud", "0", "1: it shouts"},
+          },
+      .make =
+          [name](const EmulatorOptionReader& options, const EmulatorWorld& world) {
+            const int level = options.integer("level", 3, 0, 9);
+            if (level == 7) throw std::invalid_argument("level 7 is unlucky");
+            if (level == 8) throw std::invalid_argument(name + ": level 8 is taken");
+            if (level == 9) throw std::runtime_error("level 9 broke the toy");
+            return std::unique_ptr<DeviceEmulator>(std::make_unique<ToyDevice>(
+                name, level, options.text("label", "toy"), options.flag("loud", false), world));
+          },
+  };
+}
+
+EmulatorCatalog toys() { return EmulatorCatalog({toy_kind("whistle"), toy_kind("drum"), toy_kind("bell")}); }
 
 // The message of the std::invalid_argument `make` throws ("" when it does not).
 template <class Make>
@@ -28,101 +83,113 @@ std::string refusal(Make make) {
   return "";
 }
 
-TEST(EmulatorCatalog, NamesTheThreeEmulatorsAndTheirDrivers) {
-  EXPECT_EQ(emulator_names(), "p2os, sicklms200, sickpls");
-  ASSERT_NE(find_emulator_kind("sickpls"), nullptr);
-  EXPECT_EQ(find_emulator_kind("sickpls")->driver, "sickpls");
-  EXPECT_TRUE(find_emulator_kind("sickpls")->rides_on_robot);
-  EXPECT_FALSE(find_emulator_kind("p2os")->rides_on_robot);
-  EXPECT_EQ(find_emulator_kind("sicklms"), nullptr);
-  EXPECT_EQ(config_example(*find_emulator_kind("p2os"), "/tmp/robot"),
-            "position:0 ( driver \"p2os_position\" port \"/tmp/robot\" )");
+TEST(EmulatorCatalog, KeepsTheKindsInTheOrderGiven) {
+  const auto catalog = toys();
+  ASSERT_EQ(catalog.kinds().size(), 3u);
+  EXPECT_EQ(catalog.kinds()[0].name, "whistle");
+  EXPECT_EQ(catalog.kinds()[1].name, "drum");
+  EXPECT_EQ(catalog.kinds()[2].name, "bell");
+  EXPECT_EQ(catalog.names(), "whistle, drum, bell");
 }
 
-TEST(EmulatorCatalog, EveryKindDocumentsItsOptions) {
-  for (const auto& kind : emulator_kinds()) {
-    EXPECT_FALSE(kind.summary.empty()) << kind.name;
-    for (const auto& option : kind.options) {
-      EXPECT_FALSE(option.summary.empty()) << kind.name << " " << option.name;
-      EXPECT_FALSE(option.default_value.empty()) << kind.name << " " << option.name;
-    }
-  }
+TEST(EmulatorCatalog, FindsAKindByItsWholeName) {
+  const auto catalog = toys();
+  ASSERT_NE(catalog.find("drum"), nullptr);
+  EXPECT_EQ(catalog.find("drum"), &catalog.kinds()[1]);
+  EXPECT_EQ(catalog.find("drum")->driver, "drum_driver");
+  EXPECT_EQ(catalog.find("dru"), nullptr);
+  EXPECT_EQ(catalog.find("drums"), nullptr);
+  EXPECT_EQ(catalog.find(""), nullptr);
+}
+
+TEST(EmulatorCatalog, AnEmptyCatalogHasNone) {
+  const EmulatorCatalog empty;
+  EXPECT_TRUE(empty.kinds().empty());
+  EXPECT_EQ(empty.names(), "none");
+  EXPECT_EQ(empty.find("whistle"), nullptr);
+  EXPECT_EQ(refusal([&] { (void)empty.make("whistle", {}); }), "no emulator 'whistle'; there are none");
+  EXPECT_EQ(EmulatorCatalog(std::vector<EmulatorKind>{}).names(), "none");
+}
+
+TEST(EmulatorCatalog, RefusesTwoKindsOfOneName) {
+  EXPECT_EQ(refusal([] { EmulatorCatalog({toy_kind("drum"), toy_kind("bell"), toy_kind("drum")}); }),
+            "two emulators are named 'drum'");
+}
+
+TEST(EmulatorCatalog, RefusesAKindWithoutAFactory) {
+  EmulatorKind silent = toy_kind("mute");
+  silent.make = nullptr;
+  EXPECT_EQ(refusal([&] { EmulatorCatalog({toy_kind("drum"), silent}); }), "emulator 'mute' has no factory");
 }
 
 TEST(EmulatorCatalog, UnknownNameListsTheNames) {
-  EXPECT_EQ(refusal([] { make_emulator("sicklms", {}); }),
-            "no emulator 'sicklms'; there are p2os, sicklms200, sickpls");
+  EXPECT_EQ(refusal([] { (void)toys().make("drums", {}); }), "no emulator 'drums'; there are whistle, drum, bell");
 }
 
-TEST(EmulatorCatalog, P2osOptionsReachTheRobot) {
-  auto made = make_emulator("p2os", {{"model", "p3at"}, {"pose", "1.5,-2,90"}, {"baud", "38400"}, {"name", "rover"}});
-  auto& robot = dynamic_cast<P2osRobotEmulator&>(*made);
-  EXPECT_EQ(robot.params().subclass, "p3at");
-  EXPECT_EQ(robot.baud(), 38400);
-  EXPECT_DOUBLE_EQ(robot.true_pose().x, 1.5);
-  EXPECT_DOUBLE_EQ(robot.true_pose().y, -2.0);
-  EXPECT_NEAR(robot.true_pose().yaw, std::numbers::pi / 2, 1e-12);
-  EXPECT_NE(robot.describe().find("\"rover\""), std::string::npos) << robot.describe();
+TEST(EmulatorCatalog, UnknownOptionListsTheOptions) {
+  EXPECT_EQ(refusal([] { (void)toys().make("bell", {{"levle", "1"}}); }),
+            "bell: no option 'levle'; its options are level, label, loud");
+  EXPECT_EQ(refusal([] { (void)toys().make("bell", {{"level", "1"}, {"level", "2"}}); }),
+            "bell: option 'level' is given twice");
 }
 
-TEST(EmulatorCatalog, DefaultsAreThoseOfTheEmulators) {
-  auto made = make_emulator("p2os", {});
-  auto& robot = dynamic_cast<P2osRobotEmulator&>(*made);
-  EXPECT_EQ(robot.params().subclass, "p3dx");
-  EXPECT_EQ(robot.baud(), 0);
-  auto laser = make_emulator("sicklms200", {});
-  EXPECT_EQ(laser->protocol_name(), "sicklms200");
-  EXPECT_EQ(laser->baud(), 9600);
-  EXPECT_EQ(make_emulator("sickpls", {})->protocol_name(), "sickpls");
+TEST(EmulatorCatalog, BadValuesAreRefusedByNameOnce) {
+  EXPECT_EQ(refusal([] { (void)toys().make("drum", {{"level", "10"}}); }),
+            "drum: level=10: expected a whole number from 0 to 9");
+  EXPECT_EQ(refusal([] { (void)toys().make("drum", {{"loud", "maybe"}}); }),
+            "drum: loud=maybe: expected 1 or 0 (yes/no, on/off)");
 }
 
-TEST(EmulatorCatalog, BadOptionsAreRefusedByName) {
-  EXPECT_EQ(refusal([] { make_emulator("sicklms200", {{"nosie", "0.1"}}); }),
-            "sicklms200: no option 'nosie'; its options are pose, mount, noise, seed, max_range, baud, model_baud, "
-            "type");
-  EXPECT_EQ(refusal([] { make_emulator("sicklms200", {{"noise", "-1"}}); }),
-            "sicklms200: noise=-1: expected a number from 0 to 1");
-  EXPECT_EQ(refusal([] { make_emulator("sickpls", {{"type", "PLS"}}); }).substr(0, 30), "sickpls: no option 'type'; its");
-  EXPECT_EQ(refusal([] { make_emulator("sicklms200", {{"baud", "115200"}}); }),
-            "sicklms200: baud=115200: a SICK laser runs at 9600, 19200, 38400 or 500000");
-  EXPECT_EQ(refusal([] { make_emulator("p2os", {{"baud", "4800"}}); }),
-            "p2os: baud=4800: a P2OS controller runs at 9600, 19200, 38400, 57600 or 115200 (0: any speed)");
-  EXPECT_EQ(refusal([] { make_emulator("p2os", {{"pose", "1,2"}}); }),
-            "p2os: pose=1,2: expected x,y,yaw in metres, metres and degrees, e.g. 1.5,-2,90");
-  EXPECT_EQ(refusal([] { make_emulator("p2os", {{"pose", "1,2,3,4"}}); }).substr(0, 18), "p2os: pose=1,2,3,4");
-  EXPECT_EQ(refusal([] { make_emulator("p2os", {{"gripper", "maybe"}}); }),
-            "p2os: gripper=maybe: expected 1 or 0 (yes/no, on/off)");
-  EXPECT_EQ(refusal([] { make_emulator("p2os", {{"seed", "1"}, {"seed", "2"}}); }),
-            "p2os: option 'seed' is given twice");
-  // What only the emulator itself can check still names it.
-  EXPECT_EQ(refusal([] { make_emulator("p2os", {{"model", "p9zz"}}); }).substr(0, 6), "p2os: ");
-  EXPECT_EQ(refusal([] { make_emulator("sicklms200", {{"type", "LMS200;30106 and more text"}}); }).substr(0, 12),
-            "sicklms200: ");
+TEST(EmulatorCatalog, AFactorysRefusalIsPrefixedWithTheKindsNameOnce) {
+  EXPECT_EQ(refusal([] { (void)toys().make("whistle", {{"level", "7"}}); }), "whistle: level 7 is unlucky");
+  EXPECT_EQ(refusal([] { (void)toys().make("whistle", {{"level", "8"}}); }), "whistle: level 8 is taken");
+  // Other errors pass as they are.
+  EXPECT_THROW((void)toys().make("whistle", {{"level", "9"}}), std::runtime_error);
+  try {
+    (void)toys().make("whistle", {{"level", "9"}});
+  } catch (const std::invalid_argument&) {
+    ADD_FAILURE() << "became an invalid_argument";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "level 9 broke the toy");
+  }
 }
 
-TEST(EmulatorCatalog, ALaserAloneStandsAtItsPoseAndRefusesAMount) {
-  EXPECT_EQ(refusal([] { make_emulator("sicklms200", {{"mount", "0.1,0,0"}}); }),
-            "sicklms200: mount=0.1,0,0: no robot is emulated to carry the laser; use pose=x,y,yaw");
-  EXPECT_EQ(refusal([] { make_emulator("sicklms200", {{"pose", "1,1,0"}}, {.map = nullptr, .carrier_pose = [] {
-                                                                             return geometry::Pose2{};
-                                                                           }}); }),
-            "sicklms200: pose=1,1,0: this laser rides on the emulated robot; say where with mount=x,y,yaw");
+TEST(EmulatorCatalog, OptionValuesReachTheFactory) {
+  const auto catalog = toys();
+  auto made = catalog.make("drum", {{"label", "snare"}, {"level", "5"}, {"loud", "yes"}});
+  ASSERT_NE(made, nullptr);
+  auto& drum = dynamic_cast<ToyDevice&>(*made);
+  EXPECT_EQ(drum.kind(), "drum");
+  EXPECT_EQ(drum.level(), 5);
+  EXPECT_EQ(drum.label(), "snare");
+  EXPECT_TRUE(drum.loud());
+  EXPECT_EQ(drum.describe(), "drum snare");
 }
 
-TEST(EmulatorCatalog, ACarriedLaserAsksItsCarrierAtEveryScan) {
-  int asked = 0;
-  auto laser = make_emulator("sicklms200", {{"mount", "0.2,0,0"}, {"model_baud", "0"}},
-                             {.map = nullptr, .carrier_pose = [&asked] {
-                                ++asked;
-                                return geometry::Pose2{1.0, 0.0, 0.0};
-                              }});
-  laser->receive(hardware::sick::encode_request(hardware::sick::StreamAllRequest{}), Duration{0}, 0);
-  const Duration later = 2s;
-  laser->advance(later);
-  std::size_t scans = 0;
-  for (const auto& telegram : laser->take_output()) scans += telegram.bytes.size() > 100 ? 1 : 0;
-  ASSERT_GT(scans, 0u);
-  EXPECT_GE(asked, static_cast<int>(scans));
+TEST(EmulatorCatalog, OptionsNotGivenAreLeftToTheFactory) {
+  auto made = toys().make("bell", {});
+  auto& bell = dynamic_cast<ToyDevice&>(*made);
+  EXPECT_EQ(bell.kind(), "bell");
+  EXPECT_EQ(bell.level(), 3);
+  EXPECT_EQ(bell.label(), "toy");
+  EXPECT_FALSE(bell.loud());
+}
+
+TEST(EmulatorCatalog, TheWorldReachesTheFactory) {
+  const auto map = grid::OccupancyGrid::centred(10, 10, 0.1, grid::CellState::free);
+  auto made = toys().make("whistle", {}, {.map = &map, .carrier_pose = [] { return geometry::Pose2{1.0, 2.0, 0.5}; }});
+  const auto& whistle = dynamic_cast<ToyDevice&>(*made);
+  EXPECT_EQ(whistle.world().map, &map);
+  ASSERT_TRUE(whistle.world().carrier_pose);
+  EXPECT_DOUBLE_EQ(whistle.world().carrier_pose().y, 2.0);
+  // Without a world: no map, no carrier.
+  auto alone = toys().make("whistle", {});
+  EXPECT_EQ(dynamic_cast<ToyDevice&>(*alone).world().map, nullptr);
+  EXPECT_FALSE(dynamic_cast<ToyDevice&>(*alone).world().carrier_pose);
+}
+
+TEST(EmulatorCatalog, ConfigExampleNamesTheInterfaceDriverAndPort) {
+  EXPECT_EQ(config_example(*toys().find("bell"), "/tmp/bell"), "comms:0 ( driver \"bell_driver\" port \"/tmp/bell\" )");
 }
 
 }  // namespace emulator_catalog_test

@@ -2,20 +2,23 @@
 
 #include <stdexcept>
 
-#include "emulators/p2os/p2os_robot_emulator.hpp"
 
 namespace playerkit::emulators {
 
-EmulatorRig::EmulatorRig(const std::vector<EmulatorRequest>& requests, RigSettings settings)
+EmulatorRig::EmulatorRig(const EmulatorCatalog& catalog, const std::vector<EmulatorRequest>& requests,
+                         RigSettings settings)
     : settings_(std::move(settings)) {
   members_.resize(requests.size());
+  kinds_.reserve(requests.size());
   // Every name first, so that a typo in the last one starts nothing.
   for (std::size_t i = 0; i < requests.size(); ++i) {
-    members_[i].kind = find_emulator_kind(requests[i].name);
-    if (!members_[i].kind) {
-      throw std::invalid_argument("no emulator '" + requests[i].name + "'; there are " + emulator_names());
+    const EmulatorKind* kind = catalog.find(requests[i].name);
+    if (!kind) {
+      throw std::invalid_argument("no emulator '" + requests[i].name + "'; there are " + catalog.names());
     }
+    kinds_.push_back(*kind);
   }
+  for (std::size_t i = 0; i < requests.size(); ++i) members_[i].kind = &kinds_[i];
   const grid::OccupancyGrid* map = settings_.map.get();
   EmulatorRunner* robot = nullptr;
   try {
@@ -23,17 +26,18 @@ EmulatorRig::EmulatorRig(const std::vector<EmulatorRequest>& requests, RigSettin
     for (const bool riders : {false, true}) {
       for (std::size_t i = 0; i < requests.size(); ++i) {
         Member& member = members_[i];
-        if (member.kind->rides_on_robot != riders) continue;
+        if ((member.kind->mount == EmulatorMount::rider) != riders) continue;
         EmulatorWorld world{.map = map, .carrier_pose = {}};
         if (riders && robot) {
           member.carried = true;
           world.carrier_pose = [robot] {
-            return robot->with_emulator<P2osRobotEmulator>([](P2osRobotEmulator& r) { return r.true_pose(); });
+            return robot->with_emulator<DeviceEmulator>(
+                [](DeviceEmulator& carrier) { return carrier.world_pose().value_or(geometry::Pose2{}); });
           };
         }
-        member.runner = std::make_unique<EmulatorRunner>(make_emulator(requests[i].name, requests[i].options, world),
+        member.runner = std::make_unique<EmulatorRunner>(catalog.make(requests[i].name, requests[i].options, world),
                                                          requests[i].endpoint, settings_.faults);
-        if (!robot && member.kind->name == "p2os") robot = member.runner.get();
+        if (!robot && member.kind->mount == EmulatorMount::robot) robot = member.runner.get();
       }
     }
   } catch (...) {

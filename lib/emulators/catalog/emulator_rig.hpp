@@ -1,9 +1,11 @@
 #pragma once
-// Several emulators at once, each on its own line, sharing one map; lasers
-// ride on the first emulated robot (their pose follows its true pose, at
-// their `mount` option). What `player-drivers emulate p2os sicklms200` runs:
+// Several emulators at once, each on its own line, sharing one map; sensors
+// that ride (EmulatorMount::rider) ride on the first emulated robot of any
+// family (their pose follows its true pose, at their `mount` option). What
+// `player-drivers emulate p2os sicklms200` runs:
 //
-//   emulators::EmulatorRig rig({{"p2os", {}, emulators::PtyEndpoint{"/tmp/robot"}},
+//   emulators::EmulatorRig rig(catalog,
+//                              {{"p2os", {}, emulators::PtyEndpoint{"/tmp/robot"}},
 //                               {"sicklms200", {{"mount", "0.16,0,0"}}, emulators::PtyEndpoint{"/tmp/laser"}}},
 //                              {.map = map});
 //   rig.config_line(1)   // laser:0 ( driver "sicklms200" port "/tmp/laser" )
@@ -36,7 +38,8 @@ class EmulatorRig {
   // Builds and starts every emulator, robots first. Throws
   // std::invalid_argument for a bad name or option (nothing is left
   // running) and links::LinkError when a line cannot be had.
-  EmulatorRig(const std::vector<EmulatorRequest>& requests, RigSettings settings);
+  // The catalog is only read while constructing.
+  EmulatorRig(const EmulatorCatalog& catalog, const std::vector<EmulatorRequest>& requests, RigSettings settings);
   EmulatorRig(const EmulatorRig&) = delete;
   EmulatorRig& operator=(const EmulatorRig&) = delete;
   // Stops the riders before the robot they read.
@@ -55,12 +58,13 @@ class EmulatorRig {
 
  private:
   struct Member {
-    const EmulatorKind* kind = nullptr;
+    const EmulatorKind* kind = nullptr;  // a copy's, kept in kinds_
     bool carried = false;
     std::unique_ptr<EmulatorRunner> runner;
   };
 
   RigSettings settings_;
+  std::vector<EmulatorKind> kinds_;
   std::vector<Member> members_;
 };
 

@@ -18,7 +18,6 @@ using namespace std::chrono_literals;
 // "tick" every 100 ms once asked "go".
 class ToyDevice final : public DeviceEmulator {
  public:
-  std::string_view protocol_name() const override { return "toy"; }
   void receive(std::span<const std::uint8_t> bytes, Duration now, int host_baud) override {
     for (std::uint8_t byte : bytes) {
       if (byte == '?') {

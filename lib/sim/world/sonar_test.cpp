@@ -16,7 +16,7 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kDegree = kPi / 180.0;
 
 // A Pioneer 2-DX's 16 sonars (x, y in mm, heading in degrees; the table of
-// lib/hardware/p2os/robot_params.cpp).
+// lib/families/p2os/protocol/robot_params.cpp).
 std::vector<Pose2> pioneer_ring() {
   const double poses[16][3] = {{115, 130, 90},    {155, 115, 50},   {190, 80, 30},    {210, 25, 10},
                                {210, -25, -10},   {190, -80, -30},  {155, -115, -50}, {115, -130, -90},

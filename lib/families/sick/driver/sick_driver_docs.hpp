@@ -1,0 +1,12 @@
+#pragma once
+// What `player-drivers info` shows for sicklms200 and sickpls: options with
+// type, default and unit, requests, and a section to paste.
+
+#include "core/driver_registry.hpp"
+#include "families/sick/protocol/codes.hpp"
+
+namespace playerkit::drivers::sick_laser {
+
+core::DriverDoc sick_driver_doc(hardware::sick::Model model);
+
+}  // namespace playerkit::drivers::sick_laser
