@@ -48,7 +48,8 @@ std::string main_footer(const families::FamilyRegistry& families) {
   return "Examples:\n"
          "  player-drivers list                              every driver: interfaces, access, hardware, summary\n"
          "  player-drivers list --interface laser --json     the laser drivers as JSON lines\n"
-         "  player-drivers info NAME                         options, requests, manual section, a config to paste\n"
+         "  player-drivers info NAME                         options, requests, manual section, a config to paste\n" +
+         family_examples(families, "info") +
          "  player-drivers run lifomcom --req push channel=news data.data=hello\n" +
          family_examples(families, "run") +
          "  player-drivers probe /dev/ttyUSB0 /dev/ttyUSB1   which device answers where, and its config line\n" +

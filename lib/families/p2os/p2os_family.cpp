@@ -18,6 +18,7 @@ FamilySpec p2os_family() {
       .emulators = {p2os_emulator_kind()},
       .examples =
           {
+              "player-drivers info p2os",
               "player-drivers run p2os port=/dev/ttyUSB0 --device position:0 --stats",
               "player-drivers run p2os port=/dev/ttyUSB0 --device position:0 --stdin < drive.jsonl",
               "player-drivers emulate p2os model=p3at baud=38400 --link /tmp/robot --fault bad-checksum=0.01",

@@ -29,6 +29,7 @@ FamilySpec sick_family() {
       .emulators = {sicklms200_emulator_kind(), sickpls_emulator_kind()},
       .examples =
           {
+              "player-drivers info sicklms200",
               "player-drivers run sicklms200 port=/dev/ttyUSB0 rate=38400 -n 3 --si --format json",
               "player-drivers run sicklms200 port=/tmp/laser --req get-geom",
               "player-drivers run sicklms200 port=/dev/ttyUSB0 --stats --trace --duration 10",
