@@ -11,11 +11,20 @@ wire_roundtrip="$build_dir/examples/wire-roundtrip/wire-roundtrip"
 bats_require_minimum_version 1.5.0
 battery_plugin="$build_dir/examples/plugin-driver/libplayerkit_battery_plugin.so"
 
+# Waits with a deadline (PLAYERKIT_WAIT_TIMEOUT seconds, default 30) that end
+# early when the process waited on has died, and say what they waited for:
+# wait_until, wait_for_file, wait_for_nonempty, wait_for_line, wait_for_lines,
+# wait_for_port, wait_for_exit (sets exit_status), read_bytes.
+wait_name=bats
+# shellcheck source=scripts/lib/wait.bash
+source "$repo_root/scripts/lib/wait.bash"
+
 # start_server LOGFILE ARGS...: runs player-serve in the background with its
 # stderr in LOGFILE; sets server_pid, and server_port from the first
-# "listening on port N" line (waits at most 30 s for it: a replay indexes its
-# whole log first, 6 s for a Radish log under AddressSanitizer on an idle
-# machine; a server that exits early is noticed at once).
+# "listening on port N" line (waits PLAYERKIT_WAIT_TIMEOUT, 30 s, for it: a
+# replay indexes its whole log first, 6 s for a Radish log under
+# AddressSanitizer on an idle machine; a server that exits early is noticed at
+# once).
 start_server() {
   local log="$1"
   shift
@@ -32,16 +41,15 @@ start_replay() {
 start_daemon() {
   local log="$1"
   shift
+  # Emptied first: the background shell truncates LOG only once it runs, and
+  # a loaded machine may run it after the wait has read a line left there by
+  # an earlier server (a test serving twice with one LOG).
+  : >"$log"
   "$@" 2>"$log" &
   server_pid=$!
   server_port=""
-  for _ in $(seq 1 300); do
-    server_port="$(sed -n 's/.*listening on port \([0-9]*\).*/\1/p' "$log" | head -n 1)"
-    [ -n "$server_port" ] && return 0
-    kill -0 "$server_pid" 2>/dev/null || return 1
-    sleep 0.1
-  done
-  return 1
+  wait_for_line --pid "$server_pid" "$log" 'listening on port [0-9]+' || return 1
+  server_port="$(sed -n 's/.*listening on port \([0-9][0-9]*\).*/\1/p' "$log" | head -n 1)"
 }
 
 # kill_left_running PID...: a test's teardown; kills whatever of these is
@@ -55,20 +63,4 @@ kill_left_running() {
       wait "$pid" 2>/dev/null || true
     fi
   done
-}
-
-# wait_for_exit PID: waits at most 10 s; sets exit_status (or fails).
-wait_for_exit() {
-  local pid="$1"
-  for _ in $(seq 1 100); do
-    if ! kill -0 "$pid" 2>/dev/null; then
-      # `|| ...` keeps a non-zero status from tripping bats' errexit.
-      exit_status=0
-      wait "$pid" || exit_status=$?
-      return 0
-    fi
-    sleep 0.1
-  done
-  kill -KILL "$pid"
-  return 1
 }

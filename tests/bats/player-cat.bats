@@ -26,29 +26,6 @@ kind = socket.SOCK_STREAM if sys.argv[1] == "tcp" else socket.SOCK_DGRAM
 s = socket.socket(socket.AF_INET, kind); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])' "$1"
 }
 
-# wait_for_lines FILE N: at most 10 s until FILE has N lines.
-wait_for_lines() {
-  for _ in $(seq 1 100); do
-    [ "$(wc -l < "$1")" -ge "$2" ] && return 0
-    sleep 0.1
-  done
-  return 1
-}
-
-# wait_for_status PID: like wait_for_exit, but also for a non-zero status
-# (helpers.bash's `wait` trips bats' errexit on one).
-wait_for_status() {
-  for _ in $(seq 1 100); do
-    if ! kill -0 "$1" 2>/dev/null; then
-      exit_status=0
-      wait "$1" || exit_status=$?
-      return 0
-    fi
-    sleep 0.1
-  done
-  return 1
-}
-
 # each_line_matches REGEX: every line of $output matches (and there is one).
 each_line_matches() {
   [ -n "$output" ]
@@ -126,9 +103,9 @@ each_line_matches() {
   # The kernel accepts the connection into the backlog; nobody ever writes.
   python3 -c 'import socket, time
 s = socket.socket(); s.bind(("127.0.0.1", 0)); s.listen(4)
-print(s.getsockname()[1], flush=True); time.sleep(30)' > "$BATS_TEST_TMPDIR/port" &
+print(s.getsockname()[1], flush=True); time.sleep(300)' > "$BATS_TEST_TMPDIR/port" &
   helper_pid=$!
-  wait_for_lines "$BATS_TEST_TMPDIR/port" 1
+  wait_for_lines --pid "$helper_pid" "$BATS_TEST_TMPDIR/port" 1
   run "$player_cat" "127.0.0.1:$(cat "$BATS_TEST_TMPDIR/port")" power --timeout 0.3
   [ "$status" -eq 1 ]
   [[ "$output" == *"within the timeout"* ]]
@@ -155,9 +132,9 @@ print(s.getsockname()[1], flush=True); time.sleep(30)' > "$BATS_TEST_TMPDIR/port
   # udpbroadcast cannot listen on a UDP port held by a socket that does not share it.
   python3 -c 'import socket, time
 s = socket.socket(socket.AF_INET, socket.SOCK_DGRAM); s.bind(("0.0.0.0", 0))
-print(s.getsockname()[1], flush=True); time.sleep(30)' > "$BATS_TEST_TMPDIR/port" &
+print(s.getsockname()[1], flush=True); time.sleep(300)' > "$BATS_TEST_TMPDIR/port" &
   helper_pid=$!
-  wait_for_lines "$BATS_TEST_TMPDIR/port" 1
+  wait_for_lines --pid "$helper_pid" "$BATS_TEST_TMPDIR/port" 1
   printf 'comms:0 ( driver "udpbroadcast" addr "127.0.0.1" port %s )\n' "$(cat "$BATS_TEST_TMPDIR/port")" > "$cfg"
   serve_battery
   run --separate-stderr "$player_cat" "$target" comms
@@ -343,11 +320,12 @@ PY
   "$player_cat" "$target" comms --format json -n 1 > "$BATS_TEST_TMPDIR/out" 2>"$BATS_TEST_TMPDIR/err" &
   cat_pid=$!
   # Datagrams sent before player-cat subscribed are lost: send until one is heard.
-  for _ in $(seq 1 50); do
-    kill -0 "$cat_pid" 2>/dev/null || break
+  send_until_heard() {
     printf 'hi' > "/dev/udp/127.0.0.1/$udp_port"
-    sleep 0.1
-  done
+    ! kill -0 "$cat_pid" 2>/dev/null
+  }
+  wait_until --pid "$server_pid" --log "$BATS_TEST_TMPDIR/err" --log "$BATS_TEST_TMPDIR/server.log" \
+    "player-cat to hear a datagram sent to UDP port $udp_port" send_until_heard
   wait_for_exit "$cat_pid"
   [ "$exit_status" -eq 0 ]
   [[ "$(cat "$BATS_TEST_TMPDIR/out")" == *'"data":{"msg":[104,105]}'*'"device":"comms"'* ]]
@@ -367,7 +345,7 @@ PY
     "$player_cat" "$target" power > "$BATS_TEST_TMPDIR/out" 2>"$BATS_TEST_TMPDIR/err" &
     cat_pid=$!
     # Lines show up while player-cat runs: stdout is flushed per line.
-    wait_for_lines "$BATS_TEST_TMPDIR/out" 2
+    wait_for_lines --pid "$cat_pid" --log "$BATS_TEST_TMPDIR/out" --log "$BATS_TEST_TMPDIR/err" "$BATS_TEST_TMPDIR/out" 2
     kill "-$signal" "$cat_pid"
     wait_for_exit "$cat_pid"
     [ "$exit_status" -eq 0 ]
@@ -381,9 +359,9 @@ PY
   serve_battery
   "$player_cat" "$target" power > "$BATS_TEST_TMPDIR/out" 2>"$BATS_TEST_TMPDIR/err" &
   cat_pid=$!
-  wait_for_lines "$BATS_TEST_TMPDIR/out" 1
+  wait_for_lines --pid "$cat_pid" --log "$BATS_TEST_TMPDIR/out" --log "$BATS_TEST_TMPDIR/err" "$BATS_TEST_TMPDIR/out" 1
   kill -TERM "$server_pid"
-  wait_for_status "$cat_pid"
+  wait_for_exit "$cat_pid"
   [ "$exit_status" -eq 1 ]
   grep -q "player-cat: .*connection" "$BATS_TEST_TMPDIR/err"
 }

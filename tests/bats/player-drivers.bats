@@ -30,25 +30,22 @@ listed() {
 }
 
 # start_emulator OUT ERR ARGS...: `player-drivers emulate ARGS...` in the
-# background; waits (10 s at most) for its stdout to name every emulator.
+# background; waits (PLAYERKIT_WAIT_TIMEOUT, 30 s) for its stdout to name
+# every emulator.
 start_emulator() {
   local out="$1" err="$2"
   shift 2
+  : >"$out"  # no lines of an earlier emulator (see start_daemon)
   "$player_drivers" emulate "$@" >"$out" 2>"$err" &
   emulator_pid=$!
   local wanted=0 word
   for word in "$@"; do
     case "$word" in p2os | sicklms200 | sickpls) wanted=$((wanted + 1)) ;; esac
   done
-  for _ in $(seq 1 100); do
-    [ "$(wc -l <"$out")" -ge "$wanted" ] && return 0
-    kill -0 "$emulator_pid" 2>/dev/null || return 1
-    sleep 0.1
-  done
-  return 1
+  wait_for_lines --pid "$emulator_pid" --log "$out" --log "$err" "$out" "$wanted"
 }
 
-# stop PID: SIGTERM, then the exit status must be 0 (within 10 s).
+# stop PID: SIGTERM, then the exit status must be 0 (within PLAYERKIT_WAIT_TIMEOUT).
 stop_cleanly() {
   kill -TERM "$1"
   wait_for_exit "$1"
@@ -178,12 +175,8 @@ stop_cleanly() {
   "$player_drivers" run readlog filename="$log" autorewind=1 --device position:0 --serve 0 --bind 127.0.0.1 \
     >/dev/null 2>"$BATS_TEST_TMPDIR/run.err" &
   run_pid=$!
-  port=""
-  for _ in $(seq 1 100); do
-    port="$(sed -n 's/.*listening on port \([0-9]*\).*/\1/p' "$BATS_TEST_TMPDIR/run.err" | head -n 1)"
-    [ -n "$port" ] && break
-    sleep 0.1
-  done
+  wait_for_line --pid "$run_pid" "$BATS_TEST_TMPDIR/run.err" 'listening on port [0-9]+'
+  port="$(sed -n 's/.*listening on port \([0-9][0-9]*\).*/\1/p' "$BATS_TEST_TMPDIR/run.err" | head -n 1)"
   [ -n "$port" ]
   grep -q "(127.0.0.1): position:0 (readlog)" "$BATS_TEST_TMPDIR/run.err"
   run --separate-stderr timeout 30 "$player_cat" "127.0.0.1:$port" position:0 -n 2 --format json
@@ -257,11 +250,7 @@ stop_cleanly() {
   [ "$status" -eq 0 ]
   [[ "$output" == "tcp:127.0.0.1:$port: sicklms200, LMS200;30106"* ]]
   # --stats: a line a second; one after the probe counts its bytes.
-  for _ in $(seq 1 100); do
-    grep -q "^stats sicklms200 tcp:127.0.0.1:$port: in [1-9]" "$BATS_TEST_TMPDIR/emulate.err" && break
-    sleep 0.1
-  done
-  grep -q "^stats sicklms200 tcp:127.0.0.1:$port: in [1-9]" "$BATS_TEST_TMPDIR/emulate.err"
+  wait_for_line --pid "$emulator_pid" "$BATS_TEST_TMPDIR/emulate.err" "^stats sicklms200 tcp:127.0.0.1:$port: in [1-9]"
   stop_cleanly "$emulator_pid"
 }
 
@@ -281,12 +270,9 @@ stop_cleanly() {
 fd = os.open(sys.argv[1], os.O_RDWR | os.O_NOCTTY)
 fcntl.flock(fd, fcntl.LOCK_EX)
 print("held", flush=True)
-time.sleep(60)' "$laser" >"$BATS_TEST_TMPDIR/holder.out" &
+time.sleep(300)' "$laser" >"$BATS_TEST_TMPDIR/holder.out" &
   holder_pid=$!
-  for _ in $(seq 1 100); do
-    grep -q held "$BATS_TEST_TMPDIR/holder.out" && break
-    sleep 0.1
-  done
+  wait_for_line --pid "$holder_pid" "$BATS_TEST_TMPDIR/holder.out" '^held$'
   run timeout 30 "$player_drivers" probe "$laser"
   [ "$status" -eq 1 ]
   [[ "$output" == *"$laser is busy: held by pid $holder_pid (python3, holds the lock); stop it or pick another port"* ]]
@@ -303,11 +289,7 @@ time.sleep(60)' "$laser" >"$BATS_TEST_TMPDIR/holder.out" &
   start_emulator "$BATS_TEST_TMPDIR/emulate.out" "$BATS_TEST_TMPDIR/emulate.err" sicklms200 --link "$laser"
   "$player_drivers" run sicklms200 port="$laser" --format json >"$BATS_TEST_TMPDIR/run.out" 2>"$BATS_TEST_TMPDIR/run.err" &
   run_pid=$!
-  for _ in $(seq 1 150); do
-    [ -s "$BATS_TEST_TMPDIR/run.out" ] && break
-    sleep 0.1
-  done
-  [ -s "$BATS_TEST_TMPDIR/run.out" ]
+  wait_for_nonempty --pid "$run_pid" --log "$BATS_TEST_TMPDIR/run.err" "$BATS_TEST_TMPDIR/run.out"
   run timeout 30 "$player_drivers" probe "$laser"
   [ "$status" -eq 1 ]
   [[ "$output" == *"$laser is busy: held by pid $run_pid (player-drivers, holds the lock)"* ]]

@@ -111,10 +111,8 @@ first = float(sys.argv[2]); assert first + 100 <= d["start"] and d["end"] <= fir
 
   "$player_log" record "$target" power:0 -o "$BATS_TEST_TMPDIR/long.log" 2>"$BATS_TEST_TMPDIR/record.err" &
   record_pid=$!
-  for _ in $(seq 1 100); do
-    [ "$(grep -c ' power ' "$BATS_TEST_TMPDIR/long.log" 2>/dev/null || true)" -ge 10 ] && break
-    sleep 0.1
-  done
+  has_ten() { [ "$(grep -c ' power ' "$BATS_TEST_TMPDIR/long.log" 2>/dev/null || true)" -ge 10 ]; }
+  wait_until --pid "$record_pid" --log "$BATS_TEST_TMPDIR/record.err" "10 power lines in long.log" has_ten
   kill -TERM "$record_pid"
   wait_for_exit "$record_pid"
   [ "$exit_status" -eq 0 ]
@@ -226,10 +224,8 @@ first = float(sys.argv[2]); assert first + 100 <= d["start"] and d["end"] <= fir
   "$player_log" record "$target" power:0 -o "$BATS_TEST_TMPDIR/long.log.gz" 2>"$BATS_TEST_TMPDIR/record.err" &
   record_pid=$!
   # Flushed at least once a second: the live file decodes (up to its missing end).
-  for _ in $(seq 1 100); do
-    [ "$(zcat "$BATS_TEST_TMPDIR/long.log.gz" 2>/dev/null | grep -c ' power ' || true)" -ge 10 ] && break
-    sleep 0.1
-  done
+  has_ten() { [ "$(zcat "$BATS_TEST_TMPDIR/long.log.gz" 2>/dev/null | grep -c ' power ' || true)" -ge 10 ]; }
+  wait_until --pid "$record_pid" --log "$BATS_TEST_TMPDIR/record.err" "10 power lines in long.log.gz" has_ten
   kill -TERM "$record_pid"
   wait_for_exit "$record_pid"
   [ "$exit_status" -eq 0 ]

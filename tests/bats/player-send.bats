@@ -43,29 +43,26 @@ print(value if isinstance(value, str) else json.dumps(value))' "$1"
 
 # listen_udp COUNT OUT: collects COUNT datagrams sent to the comms port into OUT
 # (one hex line each), the way another udpbroadcast peer would hear them; gives
-# up after 10 s without one. Returns once the socket is bound; sets listener_pid.
+# up after PLAYERKIT_WAIT_TIMEOUT (30 s) without one. Returns once the socket is
+# bound; sets listener_pid.
 listen_udp() {
   local ready="$BATS_TEST_TMPDIR/listener.ready"
   python3 -c 'import socket, sys
-port, count, out, ready = int(sys.argv[1]), int(sys.argv[2]), sys.argv[3], sys.argv[4]
+port, count, out, ready, timeout = int(sys.argv[1]), int(sys.argv[2]), sys.argv[3], sys.argv[4], float(sys.argv[5])
 s = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
 s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
 s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEPORT, 1)
 s.bind(("0.0.0.0", port))
-s.settimeout(10)
+s.settimeout(timeout)
 open(ready, "w").close()
 with open(out, "w") as f:
     for _ in range(count):
         data, _ = s.recvfrom(65536)
         f.write(data.hex() + "\n")
-        f.flush()' "$udp_port" "$1" "$2" "$ready" &
+        f.flush()' "$udp_port" "$1" "$2" "$ready" "${PLAYERKIT_WAIT_TIMEOUT:-30}" &
   listener_pid=$!
   helper_pids+=("$listener_pid")
-  for _ in $(seq 1 100); do
-    [ -e "$ready" ] && return 0
-    sleep 0.05
-  done
-  return 1
+  wait_for_file --pid "$listener_pid" "$ready"
 }
 
 @test "a command really leaves: udpbroadcast sends it as a datagram, exit 0" {
@@ -142,12 +139,9 @@ with open(out, "w") as f:
 s = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
 s.bind(("0.0.0.0", int(sys.argv[1])))
 open(sys.argv[2], "w").close()
-time.sleep(30)' "$udp_port" "$BATS_TEST_TMPDIR/taken" &
+time.sleep(300)' "$udp_port" "$BATS_TEST_TMPDIR/taken" &
   helper_pids+=("$!")
-  for _ in $(seq 1 100); do
-    [ -e "$BATS_TEST_TMPDIR/taken" ] && break
-    sleep 0.05
-  done
+  wait_for_file --pid "$!" "$BATS_TEST_TMPDIR/taken"
   serve
   run --separate-stderr "$player_send" "$server" comms:0 cmd 'msg=[1]'
   [ "$status" -eq 4 ]
@@ -174,12 +168,9 @@ s = socket.socket()
 s.bind(("127.0.0.1", 0))
 s.listen(1)
 print(s.getsockname()[1], flush=True)
-time.sleep(30)' >"$BATS_TEST_TMPDIR/silent.port" &
+time.sleep(300)' >"$BATS_TEST_TMPDIR/silent.port" &
   helper_pids+=("$!")
-  for _ in $(seq 1 100); do
-    [ -s "$BATS_TEST_TMPDIR/silent.port" ] && break
-    sleep 0.05
-  done
+  wait_for_nonempty --pid "$!" "$BATS_TEST_TMPDIR/silent.port"
   run --separate-stderr "$player_send" --timeout 0.3 "127.0.0.1:$(cat "$BATS_TEST_TMPDIR/silent.port")" player req devlist
   [ "$status" -eq 1 ]
   [[ "$stderr" == *"within the timeout"* ]]

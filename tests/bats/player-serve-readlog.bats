@@ -45,10 +45,8 @@ teardown() {
   printf 'position:0 ( driver "readlog" )\nnull:0 ( driver "writelog" filename "%s" devices ["position:0"] alwayson 1 )\n' \
     "$rec" > "$cfg"
   start_server "$BATS_TEST_TMPDIR/serve.err" -p 0 -r "$log" -f 4 "$cfg"
-  for _ in $(seq 1 100); do
-    [ "$(grep -c ' position 00 ' "$rec" 2>/dev/null || true)" -ge 3 ] && break
-    sleep 0.1
-  done
+  has_three() { [ "$(grep -c ' position 00 ' "$rec" 2>/dev/null || true)" -ge 3 ]; }
+  wait_until --pid "$server_pid" --log "$BATS_TEST_TMPDIR/serve.err" --log "$rec" "3 position lines in rec.log" has_three
   kill -TERM "$server_pid"
   wait_for_exit "$server_pid"
   [ "$exit_status" -eq 0 ]

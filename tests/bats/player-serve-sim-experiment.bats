@@ -51,8 +51,7 @@ assert result["all"]["heading_rmse_rad"] < 0.035, result'
     --picture "$BATS_TEST_TMPDIR/world.png"
   run "$player_send" "127.0.0.1:$server_port" simulation:0 cmd cmd=3
   [ "$status" -eq 0 ]
-  for _ in $(seq 1 50); do [ -s "$BATS_TEST_TMPDIR/world.png" ] && break; sleep 0.1; done
-  [ -s "$BATS_TEST_TMPDIR/world.png" ]
+  wait_for_nonempty --pid "$server_pid" --log "$BATS_TEST_TMPDIR/serve.log" "$BATS_TEST_TMPDIR/world.png"
   rm "$BATS_TEST_TMPDIR/world.png"
   run "$player_send" "127.0.0.1:$server_port" --stdin <<<'{"type":"req","device":"simulation:0","data":{"raw":[3]}}'
   [ "$status" -eq 0 ]
@@ -88,10 +87,7 @@ record_circling() {
     "$3" >"$BATS_TEST_TMPDIR/record.cfg"
   start_server "$BATS_TEST_TMPDIR/serve-$1-$2.log" -s "$BATS_TEST_TMPDIR/circling.world" -p "$4" --bind 127.0.0.1 \
     --speedup "$1" --seed "$2" --sim-time 5 "$BATS_TEST_TMPDIR/record.cfg"
-  for _ in $(seq 1 200); do
-    grep -q "the simulation stops at 5" "$BATS_TEST_TMPDIR/serve-$1-$2.log" && break
-    sleep 0.05
-  done
+  wait_for_line --pid "$server_pid" "$BATS_TEST_TMPDIR/serve-$1-$2.log" "the simulation stops at 5"
   kill -INT "$server_pid"
   wait_for_exit "$server_pid"
   [ "$exit_status" -eq 0 ]
