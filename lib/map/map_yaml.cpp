@@ -82,6 +82,12 @@ bool needs_quotes(const std::string& text) {
 std::string quote(const std::string& text) {
   std::string quoted = "\"";
   for (const char c : text) {
+    // A raw line break would end the line, and the quoted value with it, for
+    // the reader (parse_flat_yaml reads one key per line).
+    if (c == '\n') {
+      quoted += "\\n";
+      continue;
+    }
     if (c == '"' || c == '\\') quoted += '\\';
     quoted += c;
   }
