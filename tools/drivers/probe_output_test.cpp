@@ -15,21 +15,21 @@ namespace probe_output_test {
 
 families::ProbeResult found_robot(std::string note) {
   families::ProbeResult result;
-  result.port = "/dev/ttyUSB0";
+  result.port = "/tmp/pk-robot";
   result.found = families::Identification{.driver = "p2os",
                                           .model = "Pioneer p3dx \"robot\"",
                                           .interface_name = "position",
                                           .config_driver = "p2os_position",
                                           .note = std::move(note)};
   result.baud = 9600;
-  result.config_line = "position:0 ( driver \"p2os_position\" port \"/dev/ttyUSB0\" )";
+  result.config_line = "position:0 ( driver \"p2os_position\" port \"/tmp/pk-robot\" )";
   return result;
 }
 
 families::ProbeResult missing_port() {
   families::ProbeResult result;
-  result.port = "/dev/ttyUSB7";
-  result.problem = "no such port /dev/ttyUSB7";
+  result.port = "/tmp/pk-missing";
+  result.problem = "no such port /tmp/pk-missing";
   result.port_unusable = true;
   return result;
 }
@@ -49,15 +49,15 @@ nlohmann::json json_of(const families::ProbeResult& result) {
 
 TEST(ProbeOutput, TextReport) {
   EXPECT_EQ(text_of(found_robot("a note")),
-            "/dev/ttyUSB0: p2os at 9600 baud, Pioneer p3dx \"robot\"\n"
-            "    position:0 ( driver \"p2os_position\" port \"/dev/ttyUSB0\" )\n"
+            "/tmp/pk-robot: p2os at 9600 baud, Pioneer p3dx \"robot\"\n"
+            "    position:0 ( driver \"p2os_position\" port \"/tmp/pk-robot\" )\n"
             "    (a note)\n");
 }
 
 TEST(ProbeOutput, TextReportWithoutANote) {
   EXPECT_EQ(text_of(found_robot("")),
-            "/dev/ttyUSB0: p2os at 9600 baud, Pioneer p3dx \"robot\"\n"
-            "    position:0 ( driver \"p2os_position\" port \"/dev/ttyUSB0\" )\n");
+            "/tmp/pk-robot: p2os at 9600 baud, Pioneer p3dx \"robot\"\n"
+            "    position:0 ( driver \"p2os_position\" port \"/tmp/pk-robot\" )\n");
 }
 
 TEST(ProbeOutput, TextReportOfATcpPortHasNoBaud) {
@@ -74,17 +74,17 @@ TEST(ProbeOutput, TextReportOfATcpPortHasNoBaud) {
 }
 
 TEST(ProbeOutput, TextReportOfAProblem) {
-  EXPECT_EQ(text_of(missing_port()), "/dev/ttyUSB7: no such port /dev/ttyUSB7\n");
+  EXPECT_EQ(text_of(missing_port()), "/tmp/pk-missing: no such port /tmp/pk-missing\n");
 }
 
 TEST(ProbeOutput, JsonReportOfAFind) {
   const auto line = json_of(found_robot("a note"));
-  EXPECT_EQ(line["port"], "/dev/ttyUSB0");
+  EXPECT_EQ(line["port"], "/tmp/pk-robot");
   EXPECT_EQ(line["found"], true);
   EXPECT_EQ(line["driver"], "p2os");
   EXPECT_EQ(line["model"], "Pioneer p3dx \"robot\"");
   EXPECT_EQ(line["baud"], 9600);
-  EXPECT_EQ(line["config"], "position:0 ( driver \"p2os_position\" port \"/dev/ttyUSB0\" )");
+  EXPECT_EQ(line["config"], "position:0 ( driver \"p2os_position\" port \"/tmp/pk-robot\" )");
   EXPECT_EQ(line["note"], "a note");
   EXPECT_FALSE(line.contains("problem"));
   EXPECT_FALSE(json_of(found_robot("")).contains("note"));
@@ -92,10 +92,10 @@ TEST(ProbeOutput, JsonReportOfAFind) {
 
 TEST(ProbeOutput, JsonReportOfAProblem) {
   const auto line = json_of(missing_port());
-  EXPECT_EQ(line["port"], "/dev/ttyUSB7");
+  EXPECT_EQ(line["port"], "/tmp/pk-missing");
   EXPECT_EQ(line["found"], false);
   EXPECT_EQ(line["port_unusable"], true);
-  EXPECT_EQ(line["problem"], "no such port /dev/ttyUSB7");
+  EXPECT_EQ(line["problem"], "no such port /tmp/pk-missing");
   EXPECT_FALSE(line.contains("driver"));
 }
 
