@@ -174,6 +174,32 @@ TEST(P2osHandshake, ClosingThePortEndsTheSession) {
   EXPECT_TRUE(robot.connected());
 }
 
+TEST(P2osHandshake, AHostThatComesBackInTheSameReadAsItsCloseIsAnswered) {
+  // The runner may read the old session's goodbye (STOP, ENABLE 0, CLOSE)
+  // and the next session's SYNC0 in one go and only then hear that the old
+  // host hung up: the hang-up must not wipe the handshake just begun.
+  P2osRobotEmulator robot;
+  Host host(robot);
+  host.connect();
+  host.wait(300ms);
+  host.take_frames();
+  std::vector<std::uint8_t> goodbye_and_hello;
+  for (const hw::Command& c : {hw::Command::plain(command::stop), hw::Command::with_integer(command::enable, 0),
+                               hw::Command::plain(command::close), hw::Command::plain(command::sync0)}) {
+    const auto frame = hw::command_frame(c);
+    goodbye_and_hello.insert(goodbye_and_hello.end(), frame.begin(), frame.end());
+  }
+  host.write(goodbye_and_hello);
+  robot.host_disconnected(host.now());
+  EXPECT_EQ(host.take_frames(), Frames{hex("FA FB 03 00 00 00")});
+  host.send(command::sync1);
+  EXPECT_EQ(host.take_frames(), Frames{hex("FA FB 03 01 00 01")}) << robot.describe();
+  host.send(command::sync2);
+  ASSERT_EQ(host.take_packets().size(), 1u);
+  host.send(command::open);
+  EXPECT_TRUE(robot.connected());
+}
+
 TEST(P2osHandshake, DescribeSaysWhereTheLinkStands) {
   P2osRobotEmulator robot;
   Host host(robot);

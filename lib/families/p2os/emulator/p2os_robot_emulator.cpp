@@ -293,6 +293,13 @@ void P2osRobotEmulator::close() {
 
 void P2osRobotEmulator::host_disconnected(Duration now) {
   advance(now);
+  // A hang-up ends an open session, as CLOSE does (§6.4). A handshake in
+  // progress is left alone: the runner may learn of the old host's hang-up
+  // only after the bytes of a host that came back (its CLOSE and the new
+  // SYNC0 in one read), and wiping the SYNC0 would leave that host
+  // unanswered. A real controller never sees the port close at all, and
+  // SYNC0 restarts a stale handshake anyway (§6.3).
+  if (!connected()) return;
   close();
   input_.clear();
   input_waiting_since_.reset();
