@@ -16,6 +16,7 @@
 #include "core/device.hpp"
 #include "core/driver.hpp"
 #include "core/logger.hpp"
+#include "core/option_schema.hpp"
 #include "core/server_clock.hpp"
 #include "core/shared_connection.hpp"
 
@@ -40,22 +41,21 @@ struct DriverContext {
 
 using DriverFactory = std::function<std::unique_ptr<Driver>(const DriverContext&)>;
 
-// What `player-drivers info` shows about a driver: enough to write its
-// configuration section without the manual.
-struct OptionDoc {
-  std::string name;           // "rate"; legacy aliases after a slash: "laser_max_beams/laser_max_samples"
-  std::string type;           // "int", "float", "length", "angle", "string", "filename", "tuple"
-  std::string default_value;  // as it would be written in a .cfg
-  std::string unit;           // "baud", "m", "deg", "mm/s"; empty when none
-  std::string summary;        // one line; allowed values where they are few
-};
-
+// What `player-drivers info` shows about a driver, and the options it takes.
 struct DriverDoc {
   std::string manual_section;  // "7.39" (Player 1.5 manual)
   bool needs_hardware = false;  // opens a port, a device file or a remote server
+  // Rows written by hand, for drivers without a schema (below).
   std::vector<OptionDoc> options;
   std::vector<std::string> requests;  // "GET_GEOM: the laser's pose and size", ...
   std::string example;                // a config section to paste
+  // The driver's options declared once (option_schema.hpp): instantiate_devices
+  // validates a section against it before the factory runs, and the tools
+  // document it. Empty for drivers that read their options on their own.
+  OptionSchema schema{};
+
+  // The schema's rows when there is one, else the hand-written ones.
+  [[nodiscard]] std::vector<OptionDoc> option_rows() const { return schema.empty() ? options : schema.docs(); }
 };
 
 struct DriverSpec {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "config/errors.hpp"
+#include "core/option_reader.hpp"
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::core {
@@ -51,6 +52,9 @@ void instantiate_devices(const config::ConfigFile& config, const DriverRegistry&
                                 logger,     devices.connections()};
     std::unique_ptr<Driver> driver;
     try {
+      // Every declared option the section writes is checked here, whether or
+      // not the factory reads it in this configuration.
+      OptionReader(context.section, spec->name, spec->doc.schema).validate();
       driver = spec->factory(context);
     } catch (const config::ConfigError&) {
       throw;
