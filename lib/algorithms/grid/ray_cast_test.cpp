@@ -132,8 +132,8 @@ TEST(TraceCells, VisitsAConnectedSequenceOfCrossedCells) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> coordinate(-5.0, 25.0);  // partly outside the grid
   for (int trial = 0; trial < 500; ++trial) {
-    const Eigen::Vector2d from(coordinate(random), coordinate(random));
-    const Eigen::Vector2d to(coordinate(random), coordinate(random));
+    const Eigen::Vector2d from{coordinate(random), coordinate(random)};
+    const Eigen::Vector2d to{coordinate(random), coordinate(random)};
     std::vector<Eigen::Vector2i> cells;
     trace_cells(grid, from, to, [&](const Eigen::Vector2i& cell) {
       cells.push_back(cell);

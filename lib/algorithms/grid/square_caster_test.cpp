@@ -137,7 +137,11 @@ TEST(SquareCaster, AgreesWithCastRayInWideOpenSpace) {
   OccupancyGrid grid(2600, 2200, 0.05, {-60.0, -50.0}, CellState::free);
   std::mt19937 random(5);
   std::uniform_int_distribution<int> col(0, grid.width() - 1), row(0, grid.height() - 1);
-  for (int i = 0; i < 40; ++i) grid.set(col(random), row(random), CellState::occupied);
+  for (int i = 0; i < 40; ++i) {
+    // One draw per statement: a call's arguments go in an unspecified order.
+    const int c = col(random);
+    grid.set(c, row(random), CellState::occupied);
+  }
   fill(grid, 1000, 1000, 1003, 1400, CellState::occupied);
   const int hits = expect_same_as_cast_ray(grid, random_rays(grid, 3, 4000, 200.0), "open space");
   EXPECT_GT(hits, 100);
@@ -278,7 +282,7 @@ TEST(SquareCaster, ClearAroundIsTheClearSquareOfAPointsCell) {
   std::uniform_real_distribution<double> x(-2.0, -2.0 + grid.width() * 0.05), y(-1.0, -1.0 + grid.height() * 0.05);
   int roomy = 0;
   for (int i = 0; i < 2000; ++i) {
-    const Eigen::Vector2d point(x(random), y(random));
+    const Eigen::Vector2d point{x(random), y(random)};
     const double clear = rooms_caster.clear_around(point);
     roomy += clear > 0.3;
     if (clear == 0.0) continue;  // nothing promised
@@ -386,7 +390,12 @@ TEST(SquareCaster, ClearAroundIsTheChebyshevDistanceToTheNearestStoppingCell) {
   for (const auto& [width, height, blobs] : {std::tuple{40, 30, 12}, std::tuple{300, 7, 2}, std::tuple{1, 1, 0}}) {
     OccupancyGrid grid(width, height, 0.1, {-1.0, 2.0}, CellState::free);
     std::uniform_int_distribution<int> col(0, width - 1), row(0, height - 1), kind(0, 2);
-    for (int b = 0; b < blobs; ++b) grid.set(col(random), row(random), kind(random) == 0 ? CellState::unknown : CellState::occupied);
+    for (int b = 0; b < blobs; ++b) {
+      // One draw per statement: a call's arguments go in an unspecified order.
+      const int c = col(random);
+      const int r = row(random);
+      grid.set(c, r, kind(random) == 0 ? CellState::unknown : CellState::occupied);
+    }
     for (const RayStop stop : {RayStop::occupied, RayStop::occupied_or_unknown}) {
       const SquareCaster caster(grid, stop);
       for (int r = 0; r < height; ++r) {

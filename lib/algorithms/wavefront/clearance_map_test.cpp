@@ -85,7 +85,7 @@ TEST(ClearanceMap, PointAndSegmentQueriesAreExact) {
   std::mt19937 random(3);
   std::uniform_real_distribution<double> x(-1.2, 2.2), y(1.8, 5.2);
   for (int trial = 0; trial < 80; ++trial) {
-    const Eigen::Vector2d a(x(random), y(random));
+    const Eigen::Vector2d a{x(random), y(random)};
     const Eigen::Vector2d b = a + Eigen::Vector2d(x(random) - 0.5, y(random) - 3.5) * 0.3;
     for (const double limit : {0.15, 0.6}) {
       ASSERT_NEAR(map.point_clearance(a, limit), std::min(brute_force(grid, a), limit), 1e-9);

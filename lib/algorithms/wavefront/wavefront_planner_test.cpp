@@ -33,8 +33,14 @@ OccupancyGrid cluttered_room(std::mt19937& random, int width, int height, int bl
   OccupancyGrid grid = free_room(width, height);
   std::uniform_int_distribution<int> col(0, width - 1), row(0, height - 1), size(0, largest), kind(0, 3);
   for (int blob = 0; blob < blobs; ++blob) {
-    const int c = col(random), r = row(random);
-    fill(grid, c, r, c + size(random), r + size(random), kind(random) == 0 ? CellState::unknown : CellState::occupied);
+    // One draw per statement: the order of a call's arguments is unspecified
+    // (GCC and clang differ), and the room must not depend on the compiler.
+    const int c = col(random);
+    const int r = row(random);
+    const int c_end = c + size(random);
+    const int r_end = r + size(random);
+    const bool unknown = kind(random) == 0;
+    fill(grid, c, r, c_end, r_end, unknown ? CellState::unknown : CellState::occupied);
   }
   return grid;
 }
@@ -262,7 +268,7 @@ TEST(WavefrontPlanner, EveryPathKeepsTheClearanceOnClutteredMaps) {
     WavefrontPlanner planner(grid, parameters);
     std::uniform_real_distribution<double> x(0.0, 7.0), y(0.0, 5.0);
     for (int trial = 0; trial < 12; ++trial) {
-      const Eigen::Vector2d start(x(random), y(random)), goal(x(random), y(random));
+      const Eigen::Vector2d start{x(random), y(random)}, goal{x(random), y(random)};
       const PlanResult plan = planner.plan(start, goal);
       if (!plan.found()) {
         ++refused;
@@ -294,7 +300,7 @@ TEST(WavefrontPlanner, SteeringTowardTheStartKeepsTheLeastCost) {
     even.use_goal_direction(false);
     std::uniform_real_distribution<double> x(0.0, 9.0), y(0.0, 7.0);
     for (int trial = 0; trial < 15; ++trial) {
-      const Eigen::Vector2d start(x(random), y(random)), goal(x(random), y(random));
+      const Eigen::Vector2d start{x(random), y(random)}, goal{x(random), y(random)};
       const PlanResult a = steered.plan(start, goal), b = even.plan(start, goal);
       ASSERT_EQ(a.status, b.status) << "map " << map << " trial " << trial;
       if (!a.found() || b.cells_settled == 0) continue;
