@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "emulators/runner/emulator_runner.hpp"
-#include "framing/frame_format.hpp"
+#include "framing/terminated_line_format.hpp"
 #include "links/framed_reader.hpp"
 #include "links/pseudo_terminal.hpp"
 #include "links/serial_link.hpp"
@@ -31,17 +31,9 @@ using namespace std::chrono_literals;
 constexpr std::size_t kLongestLine = 64;
 
 // A telegram is one line up to and with its '\n'.
-class LineFormat final : public framing::FrameFormat {
- public:
-  [[nodiscard]] std::string_view name() const override { return "toy line"; }
-  [[nodiscard]] framing::FrameScan scan(std::span<const std::uint8_t> buffered) const override {
-    const auto end = std::find(buffered.begin(), buffered.end(), std::uint8_t{'\n'});
-    if (end == buffered.end()) {
-      return buffered.size() >= kLongestLine ? framing::FrameScan::noise(buffered.size()) : framing::FrameScan::need();
-    }
-    return framing::FrameScan::whole(static_cast<std::size_t>(end - buffered.begin()) + 1);
-  }
-};
+framing::TerminatedLineFormat line_format() {
+  return framing::TerminatedLineFormat({.end = framing::LineEnd::lf, .max_length = kLongestLine, .name = "toy line"});
+}
 
 std::vector<std::uint8_t> line_bytes(const std::string& text) {
   std::vector<std::uint8_t> bytes(text.begin(), text.end());
@@ -94,7 +86,7 @@ ProbeMethod toy_probe(const std::string& family, std::vector<int> bauds, links::
           .bauds = std::move(bauds),
           .line = line,
           .ask = [family, lower](const ProbeContext& context) -> std::optional<Identification> {
-            const LineFormat format;
+            const auto format = line_format();
             links::FramedReader reader(context.link, format, kLongestLine);
             reader.flush();
             context.link.write_all(line_bytes(family + "?"),

@@ -22,6 +22,7 @@
 #include "core/driver_registry.hpp"
 #include "emulators/emulator_option_reader.hpp"
 #include "families/family_spec.hpp"
+#include "framing/terminated_line_format.hpp"
 #include "links/framed_reader.hpp"
 #include "links/link_error.hpp"
 #include "links/open_link.hpp"
@@ -32,17 +33,9 @@ namespace playerkit::echo_family_test_support {
 constexpr std::size_t kLongestLine = 128;
 
 // A telegram is one line up to and with its '\n'; a longer run is noise.
-class LineFormat final : public framing::FrameFormat {
- public:
-  [[nodiscard]] std::string_view name() const override { return "echo"; }
-  [[nodiscard]] framing::FrameScan scan(std::span<const std::uint8_t> buffered) const override {
-    const auto end = std::find(buffered.begin(), buffered.end(), std::uint8_t{'\n'});
-    if (end == buffered.end()) {
-      return buffered.size() >= kLongestLine ? framing::FrameScan::noise(buffered.size()) : framing::FrameScan::need();
-    }
-    return framing::FrameScan::whole(static_cast<std::size_t>(end - buffered.begin()) + 1);
-  }
-};
+framing::LineOptions echo_lines() {
+  return {.end = framing::LineEnd::lf, .max_length = kLongestLine, .name = "echo"};
+}
 
 std::vector<std::uint8_t> line_bytes(const std::string& text) {
   std::vector<std::uint8_t> bytes(text.begin(), text.end());
@@ -144,14 +137,14 @@ class EchoLineDriver final : public core::ThreadedDriver {
   }
 
   std::string port_;
-  LineFormat format_;
+  framing::TerminatedLineFormat format_{echo_lines()};
   std::mutex mutex_;
   std::unique_ptr<links::ByteLink> link_;
   core::ByteTrace trace_;
 };
 
 std::optional<families::Identification> probe_echo(const families::ProbeContext& line) {
-  const LineFormat format;
+  const framing::TerminatedLineFormat format(echo_lines());
   links::FramedReader reader(line.link, format, kLongestLine);
   reader.flush();
   const auto reply = ask_line(line.link, reader, "HELLO", "HELLO echo-box ", line.first_reply);
@@ -176,7 +169,8 @@ families::FamilySpec echo_family() {
       .name = "echo",
       .summary = "echo boxes: a family made in a test",
       .probes = {{.label = "ECHO", .bauds = {9600}, .line = {}, .ask = probe_echo}},
-      .framing = {std::make_shared<LineFormat>(), std::make_shared<LineFormat>()},
+      .framing = {std::make_shared<framing::TerminatedLineFormat>(echo_lines()),
+                  std::make_shared<framing::TerminatedLineFormat>(echo_lines())},
       .emulators = {{.name = "echobox",
                      .summary = "an echo box that greets and repeats lines",
                      .interface_name = "comms",
