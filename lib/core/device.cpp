@@ -174,13 +174,18 @@ Device::CommandStatus Device::put_command(ClientId client, std::span<const std::
   if (payload.size() < command_min_size_ || payload.size() > command_max_size_) {
     return CommandStatus::kWrongSize;
   }
-  std::lock_guard lock(mutex_);
-  command_ = Command{{payload.begin(), payload.end()}, clock_.now(), client};
-  command_taken_ = false;
-  if (info_.limits.command_queue > 0) {
-    if (command_queue_.size() == info_.limits.command_queue) command_queue_.pop_front();
-    command_queue_.push_back(*command_);
+  std::shared_ptr<Wakeup> wakeup;
+  {
+    std::lock_guard lock(mutex_);
+    command_ = Command{{payload.begin(), payload.end()}, clock_.now(), client};
+    command_taken_ = false;
+    if (info_.limits.command_queue > 0) {
+      if (command_queue_.size() == info_.limits.command_queue) command_queue_.pop_front();
+      command_queue_.push_back(*command_);
+    }
+    wakeup = wakeup_;
   }
+  if (wakeup) wakeup->notify();
   return CommandStatus::kAccepted;
 }
 
@@ -203,10 +208,20 @@ std::optional<Command> Device::latest_command() const {
 }
 
 Device::RequestStatus Device::enqueue_request(Request request) {
-  std::lock_guard lock(mutex_);
-  if (requests_.size() >= info_.limits.request_queue) return RequestStatus::kQueueFull;
-  requests_.push_back(std::move(request));
+  std::shared_ptr<Wakeup> wakeup;
+  {
+    std::lock_guard lock(mutex_);
+    if (requests_.size() >= info_.limits.request_queue) return RequestStatus::kQueueFull;
+    requests_.push_back(std::move(request));
+    wakeup = wakeup_;
+  }
+  if (wakeup) wakeup->notify();
   return RequestStatus::kQueued;
+}
+
+void Device::set_wakeup(std::shared_ptr<Wakeup> wakeup) {
+  std::lock_guard lock(mutex_);
+  wakeup_ = std::move(wakeup);
 }
 
 std::size_t Device::pending_requests() const {

@@ -30,6 +30,7 @@
 #include "core/exchange.hpp"
 #include "core/logger.hpp"
 #include "core/reader_progress.hpp"
+#include "core/wakeup.hpp"
 #include "protocol/constants.hpp"
 
 namespace playerkit::core {
@@ -160,6 +161,12 @@ class Device {
   void post_reply(Reply reply);
   std::vector<Reply> take_replies();
 
+  // --- waking the driver
+  // Notified after every accepted command and queued request, so that a
+  // driver thread sleeping on its link serves them at once (null: nobody).
+  // Set by the driver while it serves the device; the device keeps a share.
+  void set_wakeup(std::shared_ptr<Wakeup> wakeup);
+
   // --- listeners (the server; drivers reading other devices)
   void add_listener(DeviceListener* listener);
   void remove_listener(DeviceListener* listener);
@@ -201,6 +208,7 @@ class Device {
   std::deque<Command> command_queue_;  // command-queue devices only
   std::deque<Request> requests_;
   std::vector<Reply> replies_;
+  std::shared_ptr<Wakeup> wakeup_;
 
   const std::shared_ptr<ReaderProgress> readers_ = std::make_shared<ReaderProgress>();
 
