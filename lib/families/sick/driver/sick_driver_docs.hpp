@@ -1,6 +1,6 @@
 #pragma once
-// What `player-drivers info` shows for sicklms200 and sickpls: options with
-// type, default and unit, requests, and a section to paste.
+// What `player-drivers info` shows for sicklms200 and sickpls: the options
+// (their schema, sick_driver_settings.hpp), requests, and a section to paste.
 
 #include "core/driver_registry.hpp"
 #include "families/sick/protocol/codes.hpp"

@@ -1,6 +1,8 @@
 #pragma once
-// Everything a sicklms200 or sickpls device section says, read and checked
-// with core::OptionReader (errors at the option's file:line:col).
+// Everything a sicklms200 or sickpls device section says: the options
+// declared once in sick_option_schema() (what `player-drivers info`, `--check`
+// and the README's table come from), read and checked with core::OptionReader
+// (errors at the option's file:line:col).
 //
 // The 1.5 options (port, rate, delay, resolution, range_res, invert, pose)
 // keep their names and defaults; the rest are playerkit's (README.md):
@@ -11,6 +13,7 @@
 
 #include "families/sick/driver/sick_scan_config.hpp"
 #include "core/option_reader.hpp"
+#include "core/option_schema.hpp"
 
 namespace playerkit::drivers::sick_laser {
 
@@ -35,7 +38,12 @@ struct SickDriverSettings {
   std::chrono::milliseconds retry_interval{1000};
 };
 
-// `options` names the driver in its messages ("sicklms200: rate must be ...").
+// The options of `model`'s driver (the LMS 200 has fov and intensity; the
+// defaults of rate and resolution differ).
+const core::OptionSchema& sick_option_schema(Model model);
+
+// Reads `options.section()` against sick_option_schema(model); `options`
+// names the driver in its messages ("sicklms200: rate must be ...").
 SickDriverSettings read_settings(const core::OptionReader& options, Model model);
 
 }  // namespace playerkit::drivers::sick_laser

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -100,12 +102,44 @@ TEST(SickDriverSettings, BadValuesAreErrorsAtTheirOption) {
       {"driver \"sicklms200\" pose [40 0 0]", "sicklms200: pose must lie within 32.767 m"},
       {"driver \"sicklms200\" reply_timeout 0", "sicklms200: reply_timeout must be between 0.05 and 30"},
       {"driver \"sickpls\" resolution 25", "sickpls: resolution must be one of 50, 100 (got 25)"},
+      // The port is parsed as the link will be: a bad tcp: address is a
+      // config error now, not a failed first subscription.
+      {"driver \"sicklms200\" port \"tcp:localhost\"", "sicklms200: port is not a serial port or tcp:HOST:PORT"},
+      {"driver \"sicklms200\" port \"tcp:localhost:99999\"", "'99999' is not a TCP port (1..65535)"},
+      {"driver \"sickpls\" port \"tcp:localhost\"", "sickpls: port is not a serial port or tcp:HOST:PORT"},
+      {"driver \"sickpls\" port \"tcp:localhost:99999\"", "'99999' is not a TCP port (1..65535)"},
   };
   for (const auto& [options, expected] : cases) {
     const std::string error = error_of("laser ( " + options + " )");
     EXPECT_NE(error.find(expected), std::string::npos) << options << "\n  got: " << error;
     EXPECT_EQ(error.rfind("test.cfg:1:", 0), 0u) << error;
   }
+}
+
+TEST(SickDriverSettings, ABadPortIsAnErrorAtItsValue) {
+  // laser ( driver "sicklms200" port "...": the value starts at column 34.
+  EXPECT_EQ(error_of("laser ( driver \"sicklms200\" port \"tcp:localhost\" )")
+                .rfind("test.cfg:1:34: sicklms200: port is not a serial port or tcp:HOST:PORT: bad port 'tcp:localhost'", 0),
+            0u);
+}
+
+// The README's options tables are the schemas' own (between the markers
+// "<!-- options DRIVER -->" and "<!-- end options -->").
+std::string readme_table(const std::string& driver) {
+  std::ifstream in(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/sick/driver/README.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string all = text.str();
+  const std::string begin = "<!-- options " + driver + " -->\n";
+  const auto start = all.find(begin);
+  const auto end = all.find("<!-- end options -->", start);
+  if (start == std::string::npos || end == std::string::npos) return "no table for " + driver;
+  return all.substr(start + begin.size(), end - start - begin.size());
+}
+
+TEST(SickDriverSettings, TheReadmeTablesAreGeneratedFromTheSchemas) {
+  EXPECT_EQ(readme_table("sicklms200"), sick_option_schema(Model::lms200).markdown());
+  EXPECT_EQ(readme_table("sickpls"), sick_option_schema(Model::pls).markdown());
 }
 
 TEST(SickDriverSettings, BothDriversAreRegisteredReadOnlyForTheLaserWithDocs) {
@@ -119,7 +153,7 @@ TEST(SickDriverSettings, BothDriversAreRegisteredReadOnlyForTheLaserWithDocs) {
     EXPECT_EQ(spec->limits.request_queue, 10u);
     EXPECT_EQ(spec->family, "sick");
     EXPECT_TRUE(spec->doc.needs_hardware);
-    EXPECT_FALSE(spec->doc.options.empty());
+    EXPECT_FALSE(spec->doc.option_rows().empty());
     EXPECT_NE(spec->doc.example.find(name), std::string::npos);
   }
   EXPECT_EQ(registry.find("sicklms200")->doc.manual_section, "7.39");
