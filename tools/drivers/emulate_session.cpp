@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "emulators/runner/fault_injector.hpp"
 #include "links/link_error.hpp"
 #include "map/map_file.hpp"
 
@@ -14,25 +15,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::string faults_text(const emulators::InjectedFaults& faults) {
-  std::string text;
-  const auto item = [&text](std::uint64_t count, const char* what) {
-    if (count > 0) text += (text.empty() ? "" : ", ") + std::to_string(count) + " " + what;
-  };
-  item(faults.bad_checksums, "bad checksums");
-  item(faults.garbage_runs, "garbage runs");
-  item(faults.truncated, "truncated");
-  item(faults.dropped_while_dead, "dropped while the line was dead");
-  return text;
-}
-
 std::string stats_line(emulators::EmulatorRig& rig, std::size_t index) {
   const auto stats = rig.runner(index).stats();
   std::string line = "stats " + rig.kind(index).name + " " + rig.runner(index).device_path() + ": in " +
                      std::to_string(stats.bytes_in) + " B, out " + std::to_string(stats.bytes_out) + " B, " +
                      std::to_string(stats.telegrams_out) + " telegrams, host opened " +
                      std::to_string(stats.host_connects) + "x, closed " + std::to_string(stats.host_disconnects) + "x";
-  const std::string faults = faults_text(stats.faults);
+  const std::string faults = emulators::describe(stats.faults);
   if (!faults.empty()) line += ", faults: " + faults;
   return line + "; " + rig.describe(index);
 }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <string_view>
 
+#include "emulators/runner/fault_plan.hpp"
+
 namespace playerkit::player_drivers {
 
 namespace {
@@ -15,6 +17,17 @@ std::string family_examples(const families::FamilyRegistry& families, std::strin
     for (const auto& example : family.examples) {
       if (example.starts_with(prefix)) lines += "  " + example + "\n";
     }
+  }
+  return lines;
+}
+
+// Every kind the fault plan takes, from its own list, so none goes unmentioned.
+std::string fault_list() {
+  std::string lines;
+  for (const emulators::FaultKind& kind : emulators::fault_kinds()) {
+    std::string argument(kind.argument);
+    argument.resize(std::max<std::size_t>(argument.size(), 16), ' ');
+    lines += "  " + argument + std::string(kind.summary) + "\n";
   }
   return lines;
 }
@@ -117,8 +130,8 @@ std::string emulate_footer(const families::FamilyRegistry& families) {
          family_examples(families, "emulate") +
          "  player-drivers emulate NAME --tcp 0 --map data/maps/stage-cave.png --stats\n"
          "\n"
-         "Faults (--fault, repeatable): bad-checksum=P garbage=P truncate=P silent-start=S\n"
-         "vanish=AT:FOR seed=N.\n"
+         "Faults (--fault KIND=VALUE, repeatable; P a probability, S seconds):\n" +
+         fault_list() +
          "Exit status: 0 stopped (a signal or --duration), 1 a line or the map could\n"
          "not be had, 2 usage (unknown emulator or option).";
 }

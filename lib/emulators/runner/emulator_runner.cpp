@@ -65,7 +65,7 @@ std::vector<std::vector<std::uint8_t>> EmulatorRunner::exchange(std::span<const 
                                                                 int host_baud) {
   std::lock_guard lock(mutex_);
   const Duration at = now();
-  const bool dead = faults_.plan().line_dead(at);
+  const bool dead = faults_.plan().line_dead(at, host_opened_at_);
   stats_.bytes_in += received.size();
   if (!received.empty() && !dead) emulator_->receive(received, at, host_baud);
   emulator_->advance(at);
@@ -79,6 +79,12 @@ std::vector<std::vector<std::uint8_t>> EmulatorRunner::exchange(std::span<const 
     for (auto& chunk : faults_.apply(telegram)) chunks.push_back(std::move(chunk));
   }
   return chunks;
+}
+
+void EmulatorRunner::host_came() {
+  std::lock_guard lock(mutex_);
+  ++stats_.host_connects;
+  host_opened_at_ = now();
 }
 
 void EmulatorRunner::host_left() {
@@ -101,10 +107,7 @@ void EmulatorRunner::run_pty() {
     // A host that closed and opened again between two reads: the device
     // must forget the old session before it hears the new one's first bytes.
     if (got.host_reopened) host_left();
-    if (got.host_opened) {
-      std::lock_guard lock(mutex_);
-      ++stats_.host_connects;
-    }
+    if (got.host_opened) host_came();
     const auto chunks = exchange(std::span(buffer.data(), got.count), pty_->slave_baud());
     for (const auto& chunk : chunks) {
       if (pty_->write_all(chunk, SteadyClock::now() + kWriteBudget)) {
@@ -123,8 +126,7 @@ void EmulatorRunner::run_tcp() {
     if (!host) {
       host = listener_->accept(next_wake());
       if (host) {
-        std::lock_guard lock(mutex_);
-        ++stats_.host_connects;
+        host_came();
       } else {
         (void)exchange({}, 0);  // nobody on the line: what the device sends is lost
       }

@@ -85,6 +85,7 @@ class EmulatorRunner {
   // write() per chunk (faults applied). Written outside the lock, since a
   // write may wait on a host that does not read.
   std::vector<std::vector<std::uint8_t>> exchange(std::span<const std::uint8_t> received, int host_baud);
+  void host_came();
   void host_left();
   // When the thread should look again: the emulator's next deadline, but at
   // least every 50 ms so that stop() is noticed.
@@ -99,6 +100,7 @@ class EmulatorRunner {
 
   mutable std::mutex mutex_;  // the emulator, the injector and stats_
   RunnerStats stats_;
+  std::optional<Duration> host_opened_at_;  // for a slow start, which begins at every open
   std::atomic<bool> stopping_{false};
   std::thread thread_;
 };

@@ -32,6 +32,7 @@ class ToyDevice final : public DeviceEmulator {
     }
     ++receives;
     events += 'R';
+    heard_at.push_back(now);
   }
   void advance(Duration now) override {
     while (ticking_ && next_tick_ <= now) {
@@ -58,6 +59,7 @@ class ToyDevice final : public DeviceEmulator {
   int receives = 0;
   int disconnects = 0;
   std::string events;  // R: bytes received, D: host gone, in the order seen
+  std::vector<Duration> heard_at;  // when each receive() came
   std::atomic<bool> held{false};
   std::atomic<bool> released{false};
 
@@ -81,6 +83,39 @@ std::string read_for(links::ByteLink& link, std::chrono::milliseconds how_long) 
 void send(links::ByteLink& link, std::string_view text) {
   link.write_all(std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()),
                  links::deadline_in(1s));
+}
+
+// Reads until `enough` says so or the deadline passes; what was read.
+template <class Enough>
+std::string read_until(links::ByteLink& link, Enough enough, std::chrono::milliseconds limit = 5s) {
+  std::string got;
+  const auto until = links::deadline_in(limit);
+  std::array<std::uint8_t, 256> buffer{};
+  while (!enough(got) && links::LinkClock::now() < until) {
+    const std::size_t n = link.read_some(buffer, until);
+    got.append(buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(n));
+  }
+  return got;
+}
+
+// Asks "?" every 50 ms until the device answers (deadline 5 s).
+void ask_until_answered(links::ByteLink& link) {
+  const auto until = links::deadline_in(5s);
+  std::array<std::uint8_t, 64> buffer{};
+  while (links::LinkClock::now() < until) {
+    send(link, "?");
+    if (link.read_some(buffer, std::min(until, links::deadline_in(50ms))) > 0) return;
+  }
+  ADD_FAILURE() << "no answer within 5 s";
+}
+
+Duration first_heard_after(EmulatorRunner& runner, Duration since) {
+  return runner.with_emulator<ToyDevice>([since](ToyDevice& d) {
+    for (const Duration at : d.heard_at) {
+      if (at >= since) return at;
+    }
+    return Duration::max();
+  });
 }
 
 TEST(EmulatorRunner, ADriverOnThePtyTalksToTheEmulatorAtItsBaudRate) {
@@ -184,6 +219,72 @@ TEST(EmulatorRunner, BadChecksumsReachTheHost) {
   EXPECT_EQ(got.substr(0, 3), "tic");
   EXPECT_NE(got[3], 'k');  // the "checksum" byte was flipped
   EXPECT_GE(runner.stats().faults.bad_checksums, 1u);
+}
+
+TEST(EmulatorRunner, ASilentStartHearsNothingBeforeItsTime) {
+  FaultPlan plan;
+  add_fault(plan, "silent-start=0.5");
+  EmulatorRunner runner(std::make_unique<ToyDevice>(), PtyEndpoint{}, plan);
+  auto link = links::open_link(runner.device_path(), {});
+  ask_until_answered(*link);
+  EXPECT_GE(first_heard_after(runner, Duration::zero()), Duration(500ms));
+  // Once booted it stays up: a host that comes back is heard the first time.
+  link.reset();
+  link = links::open_link(runner.device_path(), {});
+  send(*link, "?");
+  EXPECT_EQ(read_until(*link, [](const std::string& s) { return !s.empty(); }).substr(0, 1), "!");
+}
+
+TEST(EmulatorRunner, ASlowStartBeginsAgainEveryTimeTheHostOpensTheLine) {
+  FaultPlan plan;
+  add_fault(plan, "slow-start=0.4");
+  EmulatorRunner runner(std::make_unique<ToyDevice>(), PtyEndpoint{}, plan);
+  for (int session = 0; session < 2; ++session) {
+    const Duration before_open = runner.now();
+    auto link = links::open_link(runner.device_path(), {});
+    ask_until_answered(*link);
+    EXPECT_GE(first_heard_after(runner, before_open), before_open + Duration(400ms)) << "session " << session;
+  }
+  EXPECT_GE(runner.stats().host_connects, 2u);
+}
+
+TEST(EmulatorRunner, GarbageArrivesBeforeTelegramsOnThePty) {
+  FaultPlan plan;
+  add_fault(plan, "garbage=1");
+  EmulatorRunner runner(std::make_unique<ToyDevice>(), PtyEndpoint{}, plan);
+  auto link = links::open_link(runner.device_path(), {});
+  send(*link, "g");
+  const std::string got = read_until(*link, [](const std::string& s) {
+    return s.find("tick") != std::string::npos && s.find("tick") > 0;
+  });
+  ASSERT_NE(got.find("tick"), std::string::npos);
+  EXPECT_GT(got.find("tick"), 0u) << "noise first";
+  EXPECT_GE(runner.stats().faults.garbage_runs, 1u);
+}
+
+TEST(EmulatorRunner, TruncatedTelegramsNeverArriveWhole) {
+  FaultPlan plan;
+  add_fault(plan, "truncate=1");
+  EmulatorRunner runner(std::make_unique<ToyDevice>(), PtyEndpoint{}, plan);
+  auto link = links::open_link(runner.device_path(), {});
+  send(*link, "g");
+  const std::string got = read_until(*link, [](const std::string& s) { return s.size() >= 12; });
+  ASSERT_GE(got.size(), 12u);
+  EXPECT_EQ(got.find('k'), std::string::npos) << "every tick lost at least its last byte: " << got;
+  EXPECT_GE(runner.stats().faults.truncated, 4u);
+}
+
+TEST(EmulatorRunner, DroppedBytesLeaveHolesInWhatArrives) {
+  FaultPlan plan;
+  add_fault(plan, "drop=0.5");
+  EmulatorRunner runner(std::make_unique<ToyDevice>(), PtyEndpoint{}, plan);
+  auto link = links::open_link(runner.device_path(), {});
+  send(*link, "g");
+  (void)read_until(*link, [](const std::string& s) { return s.size() >= 20; });
+  runner.stop();  // the counts hold still from here
+  const RunnerStats stats = runner.stats();
+  EXPECT_GT(stats.faults.dropped_bytes, 0u);
+  EXPECT_EQ(stats.bytes_out + stats.faults.dropped_bytes, 4 * stats.telegrams_out);
 }
 
 }  // namespace emulator_runner_test

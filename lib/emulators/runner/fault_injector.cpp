@@ -28,7 +28,31 @@ std::vector<std::vector<std::uint8_t>> FaultInjector::apply(const Telegram& tele
     ++counts_.truncated;
   }
   if (!bytes.empty()) chunks.push_back(std::move(bytes));
+  if (plan_.drop > 0.0) {
+    // Per byte, garbage included: the line loses bytes, it does not know telegrams.
+    for (auto& chunk : chunks) {
+      std::erase_if(chunk, [this](std::uint8_t) {
+        const bool lost = happens(plan_.drop);
+        if (lost) ++counts_.dropped_bytes;
+        return lost;
+      });
+    }
+    std::erase_if(chunks, [](const std::vector<std::uint8_t>& chunk) { return chunk.empty(); });
+  }
   return chunks;
+}
+
+std::string describe(const InjectedFaults& faults) {
+  std::string text;
+  const auto item = [&text](std::uint64_t count, const char* what) {
+    if (count > 0) text += (text.empty() ? "" : ", ") + std::to_string(count) + " " + what;
+  };
+  item(faults.bad_checksums, "bad checksums");
+  item(faults.garbage_runs, "garbage runs");
+  item(faults.truncated, "truncated");
+  item(faults.dropped_bytes, "bytes dropped");
+  item(faults.dropped_while_dead, "dropped while the line was dead");
+  return text;
 }
 
 }  // namespace playerkit::emulators

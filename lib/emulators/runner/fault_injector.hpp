@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "emulators/device_emulator.hpp"
@@ -15,8 +16,13 @@ struct InjectedFaults {
   std::uint64_t bad_checksums = 0;
   std::uint64_t garbage_runs = 0;
   std::uint64_t truncated = 0;
-  std::uint64_t dropped_while_dead = 0;  // telegrams lost to silent-start or vanish
+  std::uint64_t dropped_bytes = 0;       // single bytes lost to drop=P
+  std::uint64_t dropped_while_dead = 0;  // telegrams lost to silent-start, slow-start or vanish
 };
+
+// "3 bad checksums, 12 bytes dropped" (empty when nothing was injected): the
+// counts as `player-drivers emulate --stats` prints them.
+std::string describe(const InjectedFaults& faults);
 
 class FaultInjector {
  public:

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace playerkit::emulators {
 namespace fault_injector_test {
 
@@ -50,8 +52,41 @@ TEST(FaultInjector, TruncationKeepsAProperPrefix) {
   EXPECT_EQ(injector.counts().truncated, 50u);
 }
 
+bool is_subsequence(const std::vector<std::uint8_t>& part, const std::vector<std::uint8_t>& whole) {
+  auto at = whole.begin();
+  for (const std::uint8_t byte : part) {
+    at = std::find(at, whole.end(), byte);
+    if (at == whole.end()) return false;
+    ++at;
+  }
+  return true;
+}
+
+TEST(FaultInjector, DroppedBytesGoMissingOneByOne) {
+  FaultInjector injector({.drop = 0.5, .seed = 11});
+  std::size_t sent = 0, arrived = 0;
+  for (int i = 0; i < 200; ++i) {
+    for (const auto& chunk : injector.apply(kTelegram)) {
+      EXPECT_FALSE(chunk.empty()) << "a telegram that lost every byte is no write at all";
+      EXPECT_TRUE(is_subsequence(chunk, kTelegram.bytes)) << "what is left is the telegram with holes, in order";
+      arrived += chunk.size();
+    }
+    sent += kTelegram.bytes.size();
+  }
+  EXPECT_EQ(injector.counts().dropped_bytes, sent - arrived);
+  // Half of 1200 bytes, give or take far more than chance allows.
+  EXPECT_GT(arrived, 400u);
+  EXPECT_LT(arrived, 800u);
+  EXPECT_EQ(FaultInjector({.drop = 1.0}).apply(kTelegram).size(), 0u);
+}
+
+TEST(FaultInjector, CountsReadAsOneLine) {
+  EXPECT_EQ(describe(InjectedFaults{}), "");
+  EXPECT_EQ(describe(InjectedFaults{.bad_checksums = 2, .dropped_bytes = 7}), "2 bad checksums, 7 bytes dropped");
+}
+
 TEST(FaultInjector, TheSameSeedGivesTheSameFaults) {
-  const FaultPlan plan{.bad_checksum = 0.3, .garbage = 0.3, .truncate = 0.3, .seed = 7};
+  const FaultPlan plan{.bad_checksum = 0.3, .garbage = 0.3, .truncate = 0.3, .drop = 0.1, .seed = 7};
   FaultInjector a(plan), b(plan);
   for (int i = 0; i < 200; ++i) ASSERT_EQ(a.apply(kTelegram), b.apply(kTelegram));
   const auto& counts = a.counts();

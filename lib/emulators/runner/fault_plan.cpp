@@ -9,12 +9,26 @@ namespace playerkit::emulators {
 
 namespace {
 
-constexpr std::string_view kKinds =
-    "bad-checksum=P, garbage=P, truncate=P, silent-start=SECONDS, vanish=AT:FOR, seed=N";
+constexpr FaultKind kKinds[] = {
+    {"bad-checksum=P", "each telegram's checksum byte flipped with probability P"},
+    {"garbage=P", "1 to 16 random bytes before a telegram with probability P"},
+    {"truncate=P", "a telegram cut short with probability P"},
+    {"drop=P", "each byte sent lost with probability P"},
+    {"silent-start=S", "deaf and mute for the first S seconds"},
+    {"slow-start=S", "deaf and mute for S seconds after each time the host opens the line"},
+    {"vanish=AT:FOR", "the line dead both ways from AT for FOR seconds, then back"},
+    {"seed=N", "the seed of the random choices (default 1)"},
+};
+
+std::string kind_list() {
+  std::string list;
+  for (const FaultKind& kind : kKinds) list += (list.empty() ? "" : ", ") + std::string(kind.argument);
+  return list;
+}
 
 [[noreturn]] void refuse(std::string_view argument, std::string_view why) {
   throw std::invalid_argument("--fault " + std::string(argument) + ": " + std::string(why) +
-                              " (kinds: " + std::string(kKinds) + ")");
+                              " (kinds: " + kind_list() + ")");
 }
 
 double parse_number(std::string_view argument, std::string_view text) {
@@ -42,9 +56,11 @@ double seconds(Duration d) { return std::chrono::duration<double>(d).count(); }
 
 }  // namespace
 
+std::span<const FaultKind> fault_kinds() { return kKinds; }
+
 bool FaultPlan::any() const {
-  return bad_checksum > 0 || garbage > 0 || truncate > 0 || silent_start > Duration::zero() ||
-         vanish_for > Duration::zero();
+  return bad_checksum > 0 || garbage > 0 || truncate > 0 || drop > 0 || silent_start > Duration::zero() ||
+         slow_start > Duration::zero() || vanish_for > Duration::zero();
 }
 
 std::string FaultPlan::describe() const {
@@ -58,13 +74,16 @@ std::string FaultPlan::describe() const {
   if (bad_checksum > 0) item("bad-checksum") << bad_checksum;
   if (garbage > 0) item("garbage") << garbage;
   if (truncate > 0) item("truncate") << truncate;
+  if (drop > 0) item("drop") << drop;
   if (silent_start > Duration::zero()) item("silent-start") << seconds(silent_start);
+  if (slow_start > Duration::zero()) item("slow-start") << seconds(slow_start);
   if (vanish_for > Duration::zero()) item("vanish") << seconds(vanish_at) << ':' << seconds(vanish_for);
   return out.str();
 }
 
-bool FaultPlan::line_dead(Duration now) const {
+bool FaultPlan::line_dead(Duration now, std::optional<Duration> host_opened_at) const {
   if (now < silent_start) return true;
+  if (host_opened_at && now < *host_opened_at + slow_start) return true;
   return vanish_for > Duration::zero() && now >= vanish_at && now < vanish_at + vanish_for;
 }
 
@@ -79,8 +98,12 @@ void add_fault(FaultPlan& plan, std::string_view argument) {
     plan.garbage = parse_probability(argument, value);
   } else if (kind == "truncate") {
     plan.truncate = parse_probability(argument, value);
-  } else if (kind == "silent-start" || kind == "slow-start") {
+  } else if (kind == "drop") {
+    plan.drop = parse_probability(argument, value);
+  } else if (kind == "silent-start") {
     plan.silent_start = parse_seconds(argument, value);
+  } else if (kind == "slow-start") {
+    plan.slow_start = parse_seconds(argument, value);
   } else if (kind == "vanish") {
     const std::size_t colon = value.find(':');
     if (colon == std::string_view::npos) refuse(argument, "expected vanish=AT:FOR (seconds)");
