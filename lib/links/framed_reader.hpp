@@ -37,6 +37,7 @@ class FramedReader {
   void flush();
 
   [[nodiscard]] std::size_t buffered() const { return buffer_.size() - start_; }
+  [[nodiscard]] std::size_t max_telegram() const { return max_telegram_; }
   ByteLink& link() { return link_; }
 
  private:

@@ -20,6 +20,7 @@ LinkCounterSnapshot operator-(const LinkCounterSnapshot& later, const LinkCounte
       .bytes_dropped = later.bytes_dropped - earlier.bytes_dropped,
       .timeouts = later.timeouts - earlier.timeouts,
       .reconnects = later.reconnects - earlier.reconnects,
+      .retries = later.retries - earlier.retries,
   };
 }
 
@@ -29,7 +30,8 @@ std::string to_string(const LinkCounterSnapshot& counters) {
          counted(counters.checksum_errors, "checksum error", "checksum errors") + ", " +
          counted(counters.resyncs, "resync", "resyncs") + " (" + std::to_string(counters.bytes_dropped) +
          " B dropped), " + counted(counters.timeouts, "timeout", "timeouts") + ", " +
-         counted(counters.reconnects, "reconnect", "reconnects");
+         counted(counters.reconnects, "reconnect", "reconnects") + ", " +
+         counted(counters.retries, "retry", "retries");
 }
 
 LinkCounterSnapshot LinkCounters::snapshot() const {
@@ -42,6 +44,7 @@ LinkCounterSnapshot LinkCounters::snapshot() const {
       .bytes_dropped = bytes_dropped.value(),
       .timeouts = timeouts.value(),
       .reconnects = reconnects.value(),
+      .retries = retries.value(),
   };
 }
 

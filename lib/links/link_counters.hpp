@@ -28,13 +28,14 @@ struct LinkCounterSnapshot {
   std::uint64_t bytes_dropped = 0;    // bytes given up on: noise, bad telegrams, flushes
   std::uint64_t timeouts = 0;         // waits for a telegram (or a write) that ran out of time
   std::uint64_t reconnects = 0;       // successful reopen()s after the first open
+  std::uint64_t retries = 0;          // requests sent again because no reply came
 
   friend bool operator==(const LinkCounterSnapshot&, const LinkCounterSnapshot&) = default;
   // The change between two snapshots (for rates): later - earlier.
   friend LinkCounterSnapshot operator-(const LinkCounterSnapshot& later, const LinkCounterSnapshot& earlier);
 };
 
-// "in 1204 B, out 36 B, 12 telegrams, 1 checksum error, 2 resyncs (17 B dropped), 0 timeouts, 0 reconnects"
+// "in 1204 B, out 36 B, 12 telegrams, 1 checksum error, 2 resyncs (17 B dropped), 0 timeouts, 0 reconnects, 0 retries"
 std::string to_string(const LinkCounterSnapshot& counters);
 
 struct LinkCounters {
@@ -46,6 +47,7 @@ struct LinkCounters {
   Counter bytes_dropped;
   Counter timeouts;
   Counter reconnects;
+  Counter retries;
 
   [[nodiscard]] LinkCounterSnapshot snapshot() const;
 };

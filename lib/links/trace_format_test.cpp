@@ -44,7 +44,7 @@ TEST(LinkCounters, SnapshotDifferenceAndText) {
   EXPECT_EQ(change.bytes_in, 20u);
   EXPECT_EQ(change.telegrams, 1u);
   EXPECT_EQ(to_string(change),
-            "in 20 B, out 0 B, 1 telegram, 1 checksum error, 2 resyncs (7 B dropped), 0 timeouts, 0 reconnects");
+            "in 20 B, out 0 B, 1 telegram, 1 checksum error, 2 resyncs (7 B dropped), 0 timeouts, 0 reconnects, 0 retries");
 }
 
 }  // namespace trace_format_test
