@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "core/device.hpp"
+#include "core/option_reader.hpp"
 #include "protocol/constants.hpp"
 #include "protocol/interfaces.hpp"
 
@@ -24,6 +25,20 @@ constexpr std::chrono::milliseconds kPollInterval{10};
 constexpr int kMaxDatagramsPerRound = 64;
 
 }  // namespace
+
+const core::OptionSchema& udpbroadcast_option_schema() {
+  static const core::OptionSchema schema{
+      core::OptionSpec::text("addr", std::string(kDefaultBroadcastAddress))
+          .check([](std::string_view address) -> std::string {
+            if (Ipv4Endpoint::parse(address, kDefaultBroadcastPort)) return "";
+            return "\"" + std::string(address) + "\" is not an IPv4 address in dotted form";
+          })
+          .doc("where datagrams go (1.5: 10.255.255.255; set it for a real network)"),
+      core::OptionSpec::integer("port", kDefaultBroadcastPort, 1, 65535)
+          .doc("the UDP port sent to and listened on"),
+  };
+  return schema;
+}
 
 Ipv4Endpoint read_broadcast_destination(std::string_view address, int port) {
   if (port < 1 || port > 65535) {
@@ -107,19 +122,16 @@ core::DriverSpec udpbroadcast_driver_spec() {
   spec.interfaces = {protocol::kCommsCode};
   spec.access = protocol::Access::kAll;
   spec.factory = [](const core::DriverContext& context) {
-    const auto destination = read_broadcast_destination(
-        context.section.read_string("addr", kDefaultBroadcastAddress),
-        context.section.read_int("port", kDefaultBroadcastPort));
-    return std::make_unique<UdpBroadcastDriver>(destination);
+    const core::OptionReader options(context.section, "udpbroadcast", udpbroadcast_option_schema());
+    return std::make_unique<UdpBroadcastDriver>(
+        read_broadcast_destination(options.text("addr"), options.integer("port")));
   };
   // Every command is sent and every datagram reaches every client once, as
   // 1.5's per-client queues did: messages, unlike motor commands, add up.
   spec.limits = core::DeviceLimits{.request_queue = 8, .data_queue = 64, .command_queue = 64};
   spec.summary = "sends comms commands as UDP broadcasts and publishes every datagram heard";
   spec.doc.manual_section = "7.43";
-  spec.doc.options = {
-      {"addr", "string", "\"127.255.255.255\"", "", "where datagrams go (1.5: 10.255.255.255; set it for a real network)"},
-      {"port", "int", "6013", "", "the UDP port sent to and listened on"}};
+  spec.doc.schema = udpbroadcast_option_schema();
   spec.doc.requests = {"none: every request NACK"};
   spec.doc.example = "comms:0 ( driver \"udpbroadcast\" addr \"127.255.255.255\" port 6013 )";
   return spec;

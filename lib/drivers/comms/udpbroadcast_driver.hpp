@@ -17,6 +17,7 @@
 
 #include "core/driver.hpp"
 #include "core/driver_registry.hpp"
+#include "core/option_schema.hpp"
 #include "drivers/comms/broadcast_socket.hpp"
 
 namespace playerkit::drivers {
@@ -45,7 +46,10 @@ class UdpBroadcastDriver final : public core::ThreadedDriver {
   std::vector<std::uint8_t> receive_buffer_;
 };
 
-// Reads `addr` and `port`. Throws std::runtime_error naming the bad value.
+// addr (an IPv4 address) and port (1..65535), declared once.
+const core::OptionSchema& udpbroadcast_option_schema();
+
+// The destination of `addr` and `port`. Throws std::runtime_error naming the bad value.
 Ipv4Endpoint read_broadcast_destination(std::string_view address, int port);
 
 core::DriverSpec udpbroadcast_driver_spec();

@@ -79,6 +79,21 @@ TEST_F(UdpBroadcastTest, BadAddressIsAConfigErrorNamingIt) {
   }
 }
 
+TEST_F(UdpBroadcastTest, BadOptionsAreErrorsAtTheirValue) {
+  const auto error_of = [this](const std::string& options) -> std::string {
+    try {
+      builtin.load("comms ( driver \"udpbroadcast\" " + options + " )\n");
+    } catch (const config::ConfigError& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  // comms ( driver "udpbroadcast" ...: the value starts at column 36.
+  EXPECT_EQ(error_of("port 70000"), "test.cfg:1:36: udpbroadcast: port must be between 1 and 65535 (got 70000)");
+  EXPECT_EQ(error_of("addr \"10.0.0\""),
+            "test.cfg:1:36: udpbroadcast: addr \"10.0.0\" is not an IPv4 address in dotted form");
+}
+
 TEST(UdpBroadcastOptions, RejectBadAddressesAndPorts) {
   EXPECT_THROW((void)read_broadcast_destination("10.0.0", 6013), std::runtime_error);
   EXPECT_THROW((void)read_broadcast_destination("127.255.255.255", 0), std::runtime_error);
