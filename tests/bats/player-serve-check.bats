@@ -67,3 +67,31 @@ write_replay_log() {
   [ "$status" -eq 0 ]
   [[ "$output" == *"Player protocol 1.5"* ]]
 }
+
+# check_refuses_bad_ports INTERFACE DRIVER COLUMN: --check refuses both
+# malformed tcp: ports at the value's file:line:col (COLUMN), the same way
+# for every family's one `port` option.
+check_refuses_bad_ports() {
+  local interface="$1" driver="$2" column="$3" cfg="$BATS_TEST_TMPDIR/$2.cfg" port
+  printf '%s:0 ( driver "%s" port "%s/ttyUSB0" )\n' "$interface" "$driver" "$BATS_TEST_TMPDIR" > "$cfg"
+  run "$player_serve" --check "$cfg"
+  [ "$status" -eq 0 ] || skip "$driver is not built: $output"
+  for port in tcp:localhost tcp:localhost:99999; do
+    printf '%s:0 ( driver "%s" port "%s" )\n' "$interface" "$driver" "$port" > "$cfg"
+    run "$player_serve" --check "$cfg"
+    [ "$status" -eq 2 ]
+    [[ "$output" == "$cfg:1:$column: $driver: port is not a serial port or tcp:HOST:PORT: bad port '$port'"* ]]
+  done
+}
+
+@test "--check refuses a sicklms200 port that is no tty path or tcp:HOST:PORT, at its value" {
+  check_refuses_bad_ports laser sicklms200 36
+}
+
+@test "--check refuses a sickpls port that is no tty path or tcp:HOST:PORT, at its value" {
+  check_refuses_bad_ports laser sickpls 33
+}
+
+@test "--check refuses a p2os port that is no tty path or tcp:HOST:PORT, at its value" {
+  check_refuses_bad_ports position p2os_position 42
+}
