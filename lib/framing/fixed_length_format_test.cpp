@@ -39,7 +39,8 @@ TEST(FixedLengthFormat, Er1CommandsFromTheSheetPassTheirSum) {
   const auto format = er1_commands();
   EXPECT_EQ(format.name(), "er1");
   // er1.md §1.1 worked example (motor 0 and motor 1) and §2's RESET_5.
-  for (const std::string_view command : {"00 8B 00 11 FF FD 6E FA", "01 8A 00 11 FF FD 6E FA", "00 EF 00 11 00 00 00 00"}) {
+  for (const std::string_view command :
+       {"00 8B 00 11 FF FD 6E FA", "01 8A 00 11 FF FD 6E FA", "00 EF 00 11 00 00 00 00"}) {
     const FrameScan scan = format.scan(hex(command));
     EXPECT_EQ(scan.kind, Kind::frame) << command;
     EXPECT_EQ(scan.length, 8u);

@@ -37,13 +37,15 @@ std::optional<TerminatedLineFormat::End> TerminatedLineFormat::find_end(std::spa
       return End{at(crlf), 2};
     }
     case LineEnd::cr_or_lf: {
-      const auto end = std::find_if(buffered.begin(), buffered.end(), [](std::uint8_t b) { return b == kCarriageReturn || b == kLineFeed; });
+      const auto end = std::find_if(buffered.begin(), buffered.end(),
+                                    [](std::uint8_t b) { return b == kCarriageReturn || b == kLineFeed; });
       if (end == buffered.end()) return std::nullopt;
       const std::size_t position = at(end);
       // A CR that is the last byte buffered ends the line now: waiting for a
       // possible LF would stall a device that ends lines with CR alone. If the
       // LF comes later, scan() drops it at the front.
-      const bool pair = *end == kCarriageReturn && position + 1 < buffered.size() && buffered[position + 1] == kLineFeed;
+      const bool pair =
+          *end == kCarriageReturn && position + 1 < buffered.size() && buffered[position + 1] == kLineFeed;
       return End{position, pair ? 2u : 1u};
     }
   }

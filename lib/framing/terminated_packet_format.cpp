@@ -14,7 +14,8 @@ TerminatedPacketFormat::TerminatedPacketFormat(TerminatedPacketOptions options) 
 FrameScan TerminatedPacketFormat::scan(std::span<const std::uint8_t> buffered) const {
   if (buffered.empty()) return FrameScan::need();
   if (!is_header(buffered.front())) {
-    const auto next = std::find_if(buffered.begin() + 1, buffered.end(), [this](std::uint8_t b) { return is_header(b); });
+    const auto next =
+        std::find_if(buffered.begin() + 1, buffered.end(), [this](std::uint8_t b) { return is_header(b); });
     return FrameScan::noise(static_cast<std::size_t>(next - buffered.begin()));
   }
   const std::size_t limit = std::min(buffered.size(), options_.max_length);
