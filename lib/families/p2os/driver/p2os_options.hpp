@@ -1,12 +1,14 @@
 #pragma once
-// The options of the p2os drivers (p2os.md §4.1, manual table 7.2).
+// The options of the p2os drivers (p2os.md §4.1, manual table 7.2), declared
+// once in schemas (core::OptionSchema) that the reader, `player-serve
+// --check`, `player-drivers info` and the README's table all use.
 //
 // Robot options belong to the robot, not to one device: in 1.5's form they
 // may be written on any one of its sections (or on several, the same value
 // each time). A value that differs between two sections is an error at the
 // second (1.5 silently took the last one).
 //
-//   port             string  "/dev/ttyS0"  the serial port, or tcp:HOST:PORT
+//   port             port    "/dev/ttyS0"  the serial port, or tcp:HOST:PORT
 //   radio            int     0             non-zero: radio-modem dialogue first
 //   joystick         int     0             non-zero: JOYDRIVE 1 (joystick drives)
 //   connect_timeout  float   5 s           handshake budget at setup (playerkit)
@@ -15,20 +17,16 @@
 // p2os_position's own: max_xspeed (int mm/s, 500), max_yawspeed (int
 // deg/s, 100), use_vel_band (int, 0).
 
-#include <array>
 #include <chrono>
 #include <string>
 #include <string_view>
 
 #include "core/driver_registry.hpp"
+#include "core/option_schema.hpp"
 #include "families/p2os/driver/motor_commands.hpp"
+#include "families/p2os/driver/p2os_role.hpp"
 
 namespace playerkit::drivers::p2os {
-
-// Every driver of the family, for options written on any of their sections.
-inline constexpr std::array<std::string_view, 11> kP2osDriverNames{
-    "p2os_position", "p2os_sonar",   "p2os_gripper", "p2os_power", "p2os_bumper", "p2os_aio",
-    "p2os_dio",      "p2os_cmucam",  "p2os_compass", "p2os_gyro",  "p2os_sound"};
 
 inline constexpr std::string_view kDefaultP2osPort = "/dev/ttyS0";
 
@@ -41,6 +39,11 @@ struct RobotLinkOptions {
 
   friend bool operator==(const RobotLinkOptions&, const RobotLinkOptions&) = default;
 };
+
+// The robot options, accepted on every p2os section.
+const core::OptionSchema& robot_link_schema();
+// The options of `role`'s section: the robot's, then (p2os_position) the motors'.
+const core::OptionSchema& p2os_option_schema(P2osRole role);
 
 // Reads the robot options from every section of `context`'s robot. Throws
 // config::ConfigError at the offending value.

@@ -2,7 +2,11 @@
 // 1.5's form (no robot is opened: nothing subscribes).
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
+
 #include "config/errors.hpp"
+#include "families/p2os/driver/p2os_options.hpp"
 #include "families/p2os/driver/p2os_test_support.hpp"
 
 namespace playerkit::drivers {
@@ -41,14 +45,14 @@ TEST(P2osDrivers, AllElevenAreRegisteredWithTheirInterfacesAccessAndDocs) {
     EXPECT_EQ(spec->doc.manual_section, "7.30");
     EXPECT_TRUE(spec->doc.needs_hardware);
     EXPECT_FALSE(spec->doc.requests.empty()) << e.name;
-    EXPECT_EQ(spec->doc.options.front().name, "port");
+    EXPECT_EQ(spec->doc.option_rows().front().name, "port");
     EXPECT_FALSE(spec->summary.empty());
 
     // Every example section is a valid configuration.
     testing::BuiltinDevices builtin;
     EXPECT_NO_THROW(builtin.load(spec->doc.example + "\n")) << spec->doc.example;
   }
-  EXPECT_EQ(registry.find("p2os_position")->doc.options.back().name, "use_vel_band");
+  EXPECT_EQ(registry.find("p2os_position")->doc.option_rows().back().name, "use_vel_band");
 }
 
 TEST(P2osOptions, APortOnAnyOneSectionServesTheWholeRobotThroughOneConnection) {
@@ -117,7 +121,32 @@ TEST(P2osOptions, BadOptionsAreConfigErrorsAtTheirValue) {
       "position:0 ( driver \"p2os_position\" joystick 1 )\n"
       "sonar:0 ( driver \"p2os_sonar\" joystick 0 )\n");
   EXPECT_NE(joystick.find("test.cfg:2:"), std::string::npos) << joystick;
-  EXPECT_NE(joystick.find("differs from the value given at test.cfg:1:"), std::string::npos) << joystick;
+  EXPECT_NE(joystick.find("joystick 0 differs from 1 given at test.cfg:1:"), std::string::npos) << joystick;
+}
+
+TEST(P2osOptions, ABadTcpPortIsRefusedOnEverySectionThatWritesIt) {
+  // The first section's port is fine, the second's cannot be opened: both are checked.
+  const std::string error = config_error(
+      "position:0 ( driver \"p2os_position\" )\n"
+      "sonar:0 ( driver \"p2os_sonar\" port \"tcp:localhost:99999\" )\n");
+  EXPECT_EQ(error.rfind("test.cfg:2:", 0), 0u) << error;
+  EXPECT_NE(error.find("'99999' is not a TCP port (1..65535)"), std::string::npos) << error;
+}
+
+// The README's table is the schema's own (between "<!-- options
+// p2os_position -->" and "<!-- end options -->").
+TEST(P2osOptions, TheReadmeTableIsGeneratedFromTheSchema) {
+  std::ifstream in(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/p2os/driver/README.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string all = text.str();
+  const std::string begin = "<!-- options p2os_position -->\n";
+  const auto start = all.find(begin);
+  const auto end = all.find("<!-- end options -->", start);
+  ASSERT_NE(start, std::string::npos);
+  ASSERT_NE(end, std::string::npos);
+  EXPECT_EQ(all.substr(start + begin.size(), end - start - begin.size()),
+            p2os::p2os_option_schema(p2os::P2osRole::position).markdown());
 }
 
 }  // namespace p2os_options_test

@@ -17,22 +17,6 @@ namespace {
 using p2os::P2osRole;
 using protocol::Access;
 
-std::vector<core::OptionDoc> robot_option_docs() {
-  return {
-      {"port", "string", "\"/dev/ttyS0\"", "",
-       "serial port of the robot's HOST connector, or tcp:HOST:PORT; may be written on any one p2os "
-       "section of the robot"},
-      {"radio", "int", "0", "", "non-zero: dial a radio modem (WMS2) before connecting"},
-      {"joystick", "int", "0", "", "non-zero: let the robot's joystick drive it (JOYDRIVE 1)"},
-      {"connect_timeout", "float", "5", "s",
-       "how long setup tries to reach the robot, every speed of 9600, 38400, 19200, 115200, 57600 "
-       "(playerkit)"},
-      {"sip_timeout", "float", "2", "s",
-       "no SIP for this long: the robot counts as gone and is reconnected in the background "
-       "(playerkit)"},
-  };
-}
-
 core::DriverSpec make_spec(P2osRole role, std::uint16_t interface, Access access, std::string summary,
                            std::vector<std::string> requests, std::string example) {
   core::DriverSpec spec;
@@ -54,7 +38,7 @@ core::DriverSpec make_spec(P2osRole role, std::uint16_t interface, Access access
   spec.summary = std::move(summary);
   spec.doc.manual_section = "7.30";
   spec.doc.needs_hardware = true;
-  spec.doc.options = robot_option_docs();
+  spec.doc.schema = p2os::p2os_option_schema(role);  // the robot's options; p2os_position's own too
   spec.doc.requests = std::move(requests);
   spec.doc.example = std::move(example);
   return spec;
@@ -72,11 +56,6 @@ core::DriverSpec p2os_position_driver_spec() {
        "RESET_ODOM: SETO; the reported pose becomes (0, 0, 0)",
        "SET_ODOM: the reported pose becomes x, y (mm), theta (degrees)", "others: NACK"},
       "position:0 ( driver \"p2os_position\" port \"/dev/ttyUSB0\" max_xspeed 400 )");
-  spec.doc.options.push_back({"max_xspeed", "int", "500", "mm/s",
-                              "fastest wheel (direct mode; both wheels scale together) or VEL (separate mode)"});
-  spec.doc.options.push_back({"max_yawspeed", "int", "100", "deg/s", "fastest RVEL (separate mode)"});
-  spec.doc.options.push_back(
-      {"use_vel_band", "int", "0", "", "non-zero: never drive the two wheels in opposite directions"});
   return spec;
 }
 
