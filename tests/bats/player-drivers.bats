@@ -118,6 +118,18 @@ stop_cleanly() {
   [[ "$output" == *"no driver or driver family 'lifomcon'; did you mean 'lifomcom'?"* ]]
 }
 
+@test "info sicklms200: its options with type, default, unit and allowed values" {
+  listed sicklms200 || skip "sicklms200 is not built"
+  run --separate-stderr "$player_drivers" info sicklms200
+  [ "$status" -eq 0 ]
+  [[ "$output" =~ port\ +port\ +\"/dev/ttyS1\" ]]
+  [[ "$output" =~ rate\ +int\ +38400\ +baud\ +.*9600,\ 38400\ or\ 500000 ]]
+  [[ "$output" =~ reply_timeout\ +float\ +1\ +s\ +.*0.05\ to\ 30 ]]
+  run --separate-stderr "$player_drivers" info sickpls --json
+  [ "$(jq -r '.options[] | select(.name == "rate") | .default' <<<"$output")" = "9600" ]
+  [ "$(jq -r '.options[] | select(.name == "delay") | .unit' <<<"$output")" = "s" ]
+}
+
 @test "info of a family numbers its devices" {
   listed p2os_position || skip "the p2os drivers are not built"
   run --separate-stderr "$player_drivers" info p2os

@@ -38,7 +38,7 @@ std::string access_letter(protocol::Access access) { return std::string(1, stati
 
 nlohmann::json options_json(const core::DriverSpec& spec) {
   nlohmann::json options = nlohmann::json::array();
-  for (const auto& option : spec.doc.options) {
+  for (const auto& option : spec.doc.option_rows()) {
     options.push_back({{"name", option.name},
                        {"type", option.type},
                        {"default", option.default_value},
@@ -54,7 +54,7 @@ nlohmann::json list_json(const core::DriverSpec& spec) {
           {"access", access_letter(spec.access)},
           {"needs_hardware", spec.doc.needs_hardware},
           {"family", spec.family},
-          {"documented", !spec.doc.manual_section.empty() || !spec.doc.options.empty()},
+          {"documented", !spec.doc.manual_section.empty() || !spec.doc.option_rows().empty()},
           {"summary", spec.summary}};
 }
 
@@ -63,14 +63,15 @@ std::string padded(const std::string& text, std::size_t width) {
 }
 
 void write_options_table(const core::DriverSpec& spec, std::ostream& out) {
-  if (spec.doc.options.empty()) {
+  const std::vector<core::OptionDoc> rows = spec.doc.option_rows();
+  if (rows.empty()) {
     out << "Options: not documented for this driver";
     if (!spec.doc.manual_section.empty()) out << " (Player 1.5 manual section " << spec.doc.manual_section << ")";
     out << "\n";
     return;
   }
   std::size_t name_width = 4, type_width = 4, default_width = 7, unit_width = 4;
-  for (const auto& option : spec.doc.options) {
+  for (const auto& option : rows) {
     name_width = std::max(name_width, option.name.size());
     type_width = std::max(type_width, option.type.size());
     default_width = std::max(default_width, option.default_value.size());
@@ -78,7 +79,7 @@ void write_options_table(const core::DriverSpec& spec, std::ostream& out) {
   }
   out << "Options:\n  " << padded("NAME", name_width) << "  " << padded("TYPE", type_width) << "  "
       << padded("DEFAULT", default_width) << "  " << padded("UNIT", unit_width) << "  SUMMARY\n";
-  for (const auto& option : spec.doc.options) {
+  for (const auto& option : rows) {
     out << "  " << padded(option.name, name_width) << "  " << padded(option.type, type_width) << "  "
         << padded(option.default_value, default_width) << "  " << padded(option.unit, unit_width) << "  "
         << option.summary << "\n";
@@ -113,7 +114,7 @@ void write_spec_info(const core::DriverSpec& spec, std::ostream& out) {
   }
   out << "\nConfig:\n  " << config_section(spec) << "\n";
   out << "\nTry it:\n  player-drivers run " << spec.name;
-  for (const auto& option : spec.doc.options) {
+  for (const auto& option : spec.doc.option_rows()) {
     if (option.name == "port") out << " port=/dev/ttyUSB0";
   }
   out << " -n 5\n";

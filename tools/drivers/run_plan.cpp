@@ -23,7 +23,8 @@ bool is_number(std::string_view text) {
 }
 
 bool documents(const core::DriverSpec& spec, std::string_view option) {
-  return std::any_of(spec.doc.options.begin(), spec.doc.options.end(), [option](const core::OptionDoc& doc) {
+  const std::vector<core::OptionDoc> rows = spec.doc.option_rows();
+  return std::any_of(rows.begin(), rows.end(), [option](const core::OptionDoc& doc) {
     // "laser_max_beams/laser_max_samples": any of the names.
     std::string_view names = doc.name;
     while (!names.empty()) {

@@ -121,9 +121,10 @@ std::string unused_option_text(const RunPlan& plan, const OptionAssignment& opti
   const core::DriverSpec& spec = owner ? *owner->spec : *plan.devices.front().spec;
   std::string text = "option " + option.name + "=" + option.value + ": " + spec.name + " does not read '" +
                      option.name + "'";
-  if (spec.doc.options.empty()) return text + " (player-drivers info " + spec.name + ")";
+  const std::vector<core::OptionDoc> rows = spec.doc.option_rows();
+  if (rows.empty()) return text + " (player-drivers info " + spec.name + ")";
   std::string names;
-  for (const auto& documented : spec.doc.options) names += (names.empty() ? "" : ", ") + documented.name;
+  for (const auto& documented : rows) names += (names.empty() ? "" : ", ") + documented.name;
   return text + "; its options: " + names;
 }
 
