@@ -226,7 +226,8 @@ std::string OptionSpec::allowed_text() const {
       return either(shown);
     }
     case OptionType::word: return either(words_);
-    case OptionType::link_port: return "a tty path or tcp:HOST:PORT";
+    // Its type, "port", and its doc say it: a tty path or tcp:HOST:PORT.
+    case OptionType::link_port:
     case OptionType::text:
     case OptionType::filename:
     case OptionType::tuple: return "";
