@@ -7,7 +7,8 @@
 # drivers_<family>_test, and option PLAYERKIT_DRIVERS_<FAMILY> to leave it
 # out (Player 1.5's configure had --disable-<family>), so that one family's
 # missing dependency never breaks the others. SPECS names the family's
-# `core::DriverSpec f()` functions (namespace playerkit::drivers); the list of
+# `core::DriverSpec f()` functions, or `std::vector<core::DriverSpec> f()` for
+# drivers made from one table (namespace playerkit::drivers); the list of
 # built-in drivers is generated from the families built (builtin_drivers.cpp.in).
 # TEST_NEEDS: families whose drivers this family's tests use (amcl's tests
 # replay logs through readlog); without them the tests are not built.

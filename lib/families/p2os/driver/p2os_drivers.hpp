@@ -9,20 +9,13 @@
 //   sonar:0    ( driver "p2os_sonar" )
 //   power:0    ( driver "p2os_power" )
 
+#include <vector>
+
 #include "core/driver_registry.hpp"
 
 namespace playerkit::drivers {
 
-core::DriverSpec p2os_position_driver_spec();
-core::DriverSpec p2os_sonar_driver_spec();
-core::DriverSpec p2os_gripper_driver_spec();
-core::DriverSpec p2os_power_driver_spec();
-core::DriverSpec p2os_bumper_driver_spec();
-core::DriverSpec p2os_aio_driver_spec();
-core::DriverSpec p2os_dio_driver_spec();
-core::DriverSpec p2os_cmucam_driver_spec();
-core::DriverSpec p2os_compass_driver_spec();
-core::DriverSpec p2os_gyro_driver_spec();
-core::DriverSpec p2os_sound_driver_spec();
+// One spec per P2osRole, in its order; the names are p2os_role.hpp's.
+std::vector<core::DriverSpec> p2os_driver_specs();
 
 }  // namespace playerkit::drivers

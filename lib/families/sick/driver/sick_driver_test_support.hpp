@@ -1,31 +1,28 @@
 #pragma once
-// For the sick driver tests: an emulated laser on a real pseudo-terminal
-// (or a loopback TCP port) in a hand-made room, a device built from config
-// text as the server builds it, and bounded waits for scans and replies.
+// For the sick driver tests: an emulated laser in a hand-made room, on the
+// driver harness (drivers/driver_harness_test_support.hpp: a real
+// pseudo-terminal or a loopback TCP port, a device built from config text as
+// the server builds it, bounded waits for scans and replies).
 
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <initializer_list>
 #include <limits>
 #include <memory>
-#include <mutex>
 #include <numbers>
 #include <optional>
 #include <string>
 #include <string_view>
-#include <thread>
 #include <vector>
 
 #include "algorithms/geometry/pose2.hpp"
 #include "algorithms/grid/occupancy_grid.hpp"
-#include "families/sick/driver/sick_laser_driver.hpp"
-#include "drivers/test_support.hpp"
+#include "drivers/driver_harness_test_support.hpp"
 #include "emulators/runner/emulator_runner.hpp"
+#include "families/sick/driver/sick_laser_driver.hpp"
 #include "families/sick/emulator/sick_lms200_emulator.hpp"
 #include "families/sick/emulator/sick_pls_emulator.hpp"
 #include "families/sick/protocol/replies.hpp"
@@ -130,7 +127,7 @@ struct RigOptions {
   std::optional<std::filesystem::path> symlink{};
 };
 
-inline std::unique_ptr<emulators::DeviceEmulator> make_laser(const RigOptions& options) {
+inline std::unique_ptr<RefusingLaser> make_laser(const RigOptions& options) {
   const grid::OccupancyGrid room = box_room();  // read once by the emulator
   emulators::SickEmulatorOptions laser;
   laser.map = &room;
@@ -146,24 +143,14 @@ inline std::unique_ptr<emulators::DeviceEmulator> make_laser(const RigOptions& o
   return std::make_unique<RefusingLaser>(std::move(inner));
 }
 
-inline emulators::Endpoint endpoint_of(const RigOptions& options) {
-  if (options.tcp) return emulators::TcpEndpoint{};
-  return emulators::PtyEndpoint{options.symlink};
-}
-
-// The emulated laser, and a laser:0 device of the driver on its line.
+// The emulated laser on the harness's line, and a laser:0 device of the
+// driver on it (the harness's ConfiguredDevices).
 class LaserRig {
  public:
   explicit LaserRig(RigOptions options = {})
       : options_(std::move(options)),
-        runner_(std::make_unique<emulators::EmulatorRunner>(make_laser(options_), endpoint_of(options_),
-                                                            options_.faults)),
-        port_(runner_->device_path()) {
-    builtin.logger.set_sink([this](core::LogLevel, std::string_view line) {
-      std::lock_guard lock(log_mutex_);
-      log_.emplace_back(line);
-    });
-  }
+        line_([this] { return make_laser(options_); },
+              {.tcp = options_.tcp, .symlink = options_.symlink, .faults = options_.faults}) {}
   LaserRig(const LaserRig&) = delete;
   LaserRig& operator=(const LaserRig&) = delete;
 
@@ -171,19 +158,12 @@ class LaserRig {
     return options_.model == Model::lms200 ? "sicklms200" : "sickpls";
   }
   // Where the laser is plugged in (kept while it is unplugged).
-  [[nodiscard]] const std::string& port() const { return port_; }
+  [[nodiscard]] const std::string& port() const { return line_.port(); }
 
   // The laser unplugged (its line closed) and, unless `back` is false, a
   // fresh one (powered up anew, faults and all) plugged in on the same
   // symlink: a USB adapter pulled and put back.
-  void replug(bool back = true) {
-    runner_.reset();
-    if (back) {
-      runner_ = std::make_unique<emulators::EmulatorRunner>(make_laser(options_), endpoint_of(options_),
-                                                            options_.faults);
-      port_ = runner_->device_path();
-    }
-  }
+  void replug(bool back = true) { line_.replug(back); }
 
   // Declares laser:0 on the emulator's line with `options` (short reply
   // timeouts and retries by default, so that failures are quick).
@@ -191,87 +171,50 @@ class LaserRig {
     load_on(port(), options + " " + timing);
   }
   void load_on(const std::string& port, const std::string& options) {
-    builtin.load("laser:0 ( driver \"" + driver_name() + "\" port \"" + port + "\" " + options + " )\n");
+    devices_.load("laser:0 ( driver \"" + driver_name() + "\" port \"$PORT\" " + options + " )\n", port);
   }
 
-  core::Device& laser() { return builtin.device(protocol::kLaserCode); }
+  core::Device& laser() { return devices_.device(protocol::kLaserCode); }
   sick_laser::SickLaserDriver& driver() { return dynamic_cast<sick_laser::SickLaserDriver&>(laser().driver()); }
 
   // The next scan published from now on, or nullopt when none comes in `limit`.
   std::optional<protocol::LaserData> next_scan(std::chrono::milliseconds limit = 5s) {
-    const std::uint64_t seen = laser().latest_data()->sequence;
-    if (!drivers::testing::eventually([&] { return laser().latest_data()->sequence > seen; }, limit)) {
-      return std::nullopt;
-    }
-    return protocol::decode<protocol::LaserData>(laser().latest_data()->payload);
+    return drivers::testing::next_data<protocol::LaserData>(laser(), limit);
   }
 
   // Queues a request as client 1 and waits for its reply.
   std::optional<core::Reply> request(std::vector<std::uint8_t> payload, std::chrono::milliseconds limit = 5s) {
     laser().enqueue_request(drivers::testing::make_request(protocol::kLaserCode, std::move(payload)));
-    std::vector<core::Reply> replies;
-    drivers::testing::eventually(
-        [&] {
-          for (auto& reply : laser().take_replies()) replies.push_back(std::move(reply));
-          return !replies.empty();
-        },
-        limit);
-    if (replies.empty()) return std::nullopt;
-    return replies.front();
+    return drivers::testing::next_reply(laser(), limit);
   }
 
   template <class Action>
   auto with_laser(Action&& action) {
-    return runner_->with_emulator<RefusingLaser>([&](RefusingLaser& laser) { return action(laser); });
+    return line_.with([&](RefusingLaser& laser) { return action(laser); });
   }
-  emulators::EmulatorRunner& runner() { return *runner_; }
+  emulators::EmulatorRunner& runner() { return line_.runner(); }
 
-  std::vector<std::string> log_lines() {
-    std::lock_guard lock(log_mutex_);
-    return log_;
-  }
+  std::vector<std::string> log_lines() { return devices_.log.lines(); }
   // The first log line containing every fragment, or empty if none comes
-  // within `wait`: a driver changes its state (unavailable, available) and
-  // then logs it, so a test that saw the change may ask a moment early.
+  // within `wait`.
   std::string logged(std::initializer_list<std::string_view> fragments,
                      std::chrono::milliseconds wait = std::chrono::seconds(5)) {
-    const auto deadline = std::chrono::steady_clock::now() + wait;
-    for (;;) {
-      for (const std::string& line : log_lines()) {
-        bool all = true;
-        for (std::string_view fragment : fragments) all = all && line.find(fragment) != std::string::npos;
-        if (all) return line;
-      }
-      if (std::chrono::steady_clock::now() >= deadline) return {};
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
+    return devices_.log.first_with(fragments, wait);
   }
-  std::string all_log() {
-    std::string text;
-    for (const auto& line : log_lines()) text += line + "\n";
-    return text;
-  }
+  std::string all_log() { return devices_.log.all(); }
 
  private:
   RigOptions options_;
-  std::unique_ptr<emulators::EmulatorRunner> runner_;
-  std::string port_;
-  std::mutex log_mutex_;
-  std::vector<std::string> log_;
-
- public:
+  drivers::testing::EmulatedLine<RefusingLaser> line_;
   // Last: devices shut down (their drivers still talking to the laser)
   // before the emulator goes.
-  drivers::testing::BuiltinDevices builtin;
+  drivers::testing::ConfiguredDevices devices_;
+
+ public:
+  drivers::testing::BuiltinDevices& builtin = devices_.builtin;
 };
 
-inline std::uint64_t counter(const core::Driver& driver, std::string_view name) {
-  for (const auto& c : driver.counters()) {
-    if (c.name == name) return c.value;
-  }
-  ADD_FAILURE() << "no counter " << name;
-  return 0;
-}
+using drivers::testing::counter;
 
 inline std::vector<std::uint8_t> config_request(std::int16_t min_angle, std::int16_t max_angle,
                                                 std::uint16_t resolution, std::uint16_t range_res,
