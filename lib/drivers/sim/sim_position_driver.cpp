@@ -1,6 +1,9 @@
+#include <optional>
 #include <utility>
 
 #include "drivers/sim/simulated_drivers.hpp"
+#include "interfaces/position_data.hpp"
+#include "interfaces/position_requests.hpp"
 #include "protocol/binary_codec.hpp"
 #include "protocol/messages/position.hpp"
 
@@ -28,49 +31,41 @@ double SimPositionDriver::reading_time(const World& world) const { return world.
 
 std::optional<std::vector<std::uint8_t>> SimPositionDriver::encode_reading(const World& world) {
   const playerkit::sim::PositionReading& reading = world.position(model());
-  protocol::PositionData data;
-  data.xpos = wire_value<std::int32_t>(reading.pose.x * kMillimetresPerMetre);
-  data.ypos = wire_value<std::int32_t>(reading.pose.y * kMillimetresPerMetre);
-  data.yaw = heading_degrees(reading.pose.yaw, heading_);
-  data.xspeed = wire_value<std::int32_t>(reading.velocity.x * kMillimetresPerMetre);
-  data.yspeed = wire_value<std::int32_t>(reading.velocity.y * kMillimetresPerMetre);
-  data.yawspeed = wire_value<std::int32_t>(degrees(reading.velocity.yaw));
-  data.stall = reading.stalled ? 1 : 0;
-  return protocol::encode(data);
+  return protocol::encode(interfaces::position_data(reading.pose, reading.velocity, reading.stalled, heading_));
 }
 
 core::RequestResult SimPositionDriver::answer(World& world, const core::Request& request) {
-  switch (request.subtype()) {
-    case protocol::kPositionGetGeomReq: {
-      const playerkit::sim::Body& body = world.spec(model()).body;
-      protocol::PositionGeom geom;
-      geom.subtype = protocol::kPositionGetGeomReq;
-      geom.pose = {wire_value<std::int16_t>(body.offset.x * kMillimetresPerMetre),
-                   wire_value<std::int16_t>(body.offset.y * kMillimetresPerMetre),
-                   wire_value<std::int16_t>(degrees(body.offset.yaw))};
+  // The simulated robot's side of the position requests (Stage 1.3: GET_GEOM,
+  // RESET_ODOM, SET_ODOM, MOTOR_POWER and VELOCITY_MODE as no-ops); the
+  // adapter checks sizes and makes the replies.
+  class SimulatedBase final : public interfaces::PositionBase {
+   public:
+    SimulatedBase(World& world, ModelId model) : world_(world), model_(model) {}
+
+    std::optional<interfaces::BaseGeometry> geometry() override {
+      const playerkit::sim::Body& body = world_.spec(model_).body;
       const double width = body.shape == playerkit::sim::Shape::circle ? body.size.x() : body.size.y();
-      geom.size = {wire_value<std::uint16_t>(body.size.x() * kMillimetresPerMetre),
-                   wire_value<std::uint16_t>(width * kMillimetresPerMetre)};
-      return core::RequestResult::ack(protocol::encode(geom));
+      return interfaces::BaseGeometry{body.offset, body.size.x(), width};
     }
     // Motors are always on in a simulation; control modes are the command's type.
-    case protocol::kPositionMotorPowerReq:
-    case protocol::kPositionVelocityModeReq:
-    case protocol::kPositionPositionModeReq:
-      return core::RequestResult::ack();
-    case protocol::kPositionResetOdomReq:
-      world.set_odometry(model(), {});
-      return core::RequestResult::ack();
-    case protocol::kPositionSetOdomReq: {
-      if (request.payload.size() < protocol::PositionSetOdomRequest::kWireSize) break;
-      const auto pose = decode_padded<protocol::PositionSetOdomRequest>(request.payload);
-      world.set_odometry(model(), {pose.x / kMillimetresPerMetre, pose.y / kMillimetresPerMetre, radians(pose.theta)});
-      return core::RequestResult::ack();
+    bool set_motor_power(bool /*on*/) override { return true; }
+    bool set_velocity_mode(std::uint8_t /*mode*/) override { return true; }
+    bool set_position_mode(bool /*position_control*/) override { return true; }
+    bool reset_odometry() override {
+      world_.set_odometry(model_, {});
+      return true;
     }
-    default:
-      break;
-  }
-  return core::RequestResult::nack();
+    bool set_odometry(const geometry::Pose2& pose) override {
+      world_.set_odometry(model_, pose);
+      return true;
+    }
+
+   private:
+    World& world_;
+    ModelId model_;
+  };
+  SimulatedBase base(world, model());
+  return interfaces::answer_position_request(base, request);
 }
 
 }  // namespace playerkit::drivers::sim

@@ -1,6 +1,9 @@
 #include <algorithm>
+#include <optional>
+#include <vector>
 
 #include "drivers/sim/simulated_drivers.hpp"
+#include "interfaces/ranger_requests.hpp"
 #include "protocol/binary_codec.hpp"
 #include "protocol/messages/sonar.hpp"
 
@@ -21,27 +24,27 @@ std::optional<std::vector<std::uint8_t>> SimSonarDriver::encode_reading(const Wo
 }
 
 core::RequestResult SimSonarDriver::answer(World& world, const core::Request& request) {
-  switch (request.subtype()) {
-    case protocol::kSonarGetGeomReq: {
-      const auto& spec = std::get<playerkit::sim::SonarSpec>(world.spec(model()).params);
-      const geometry::Pose2 mount = pose_on_robot(world, model());
-      protocol::SonarGeom geom;
-      geom.subtype = protocol::kSonarGetGeomReq;
-      const std::size_t count = std::min(spec.transducers.size(), protocol::kSonarMaxSamples);
-      geom.pose_count = static_cast<std::uint16_t>(count);
-      for (std::size_t i = 0; i < count; ++i) {
-        const geometry::Pose2 pose = mount.compose(spec.transducers[i]);
-        geom.poses[i] = {wire_value<std::int16_t>(pose.x * kMillimetresPerMetre),
-                         wire_value<std::int16_t>(pose.y * kMillimetresPerMetre),
-                         wire_value<std::int16_t>(degrees(pose.yaw))};
-      }
-      return core::RequestResult::ack(protocol::encode(geom));
+  class SimulatedRing final : public interfaces::RangerArray {
+   public:
+    SimulatedRing(const World& world, ModelId model) : world_(world), model_(model) {}
+
+    // The transducers on the robot: the ring's mount composed with each one's pose on the ring.
+    std::optional<std::vector<geometry::Pose2>> sensor_poses() override {
+      const auto& spec = std::get<playerkit::sim::SonarSpec>(world_.spec(model_).params);
+      const geometry::Pose2 mount = pose_on_robot(world_, model_);
+      std::vector<geometry::Pose2> poses;
+      poses.reserve(spec.transducers.size());
+      for (const geometry::Pose2& transducer : spec.transducers) poses.push_back(mount.compose(transducer));
+      return poses;
     }
-    case protocol::kSonarPowerReq:
-      return core::RequestResult::ack();  // simulated transducers are always on
-    default:
-      return core::RequestResult::nack();
-  }
+    bool set_power(bool /*on*/) override { return true; }  // simulated transducers are always on
+
+   private:
+    const World& world_;
+    ModelId model_;
+  };
+  SimulatedRing ring(world, model());
+  return interfaces::answer_sonar_request(ring, request);
 }
 
 }  // namespace playerkit::drivers::sim

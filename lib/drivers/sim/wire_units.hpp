@@ -1,30 +1,17 @@
 #pragma once
-// The simulator's SI readings in Player 1.5's wire units: millimetres,
-// degrees, hundredths of a degree, decivolts. Rounded to the nearest unit and
-// clamped to the field's type (1.5's Stage and gz drivers truncated, and gz
-// skipped some conversions altogether: docs/compatibility.md "Simulator").
+// The simulator's SI readings in Player 1.5's wire units: the conversions
+// every driver shares (interfaces/wire_units.hpp), under the names the
+// simulated devices use.
 
-#include <cstdint>
+#include "interfaces/wire_units.hpp"
 
 namespace playerkit::drivers::sim {
 
-inline constexpr double kMillimetresPerMetre = 1000.0;
-
-// Rounded and clamped to the range of the field type T.
-template <class T>
-[[nodiscard]] T wire_value(double value);
-
-[[nodiscard]] double degrees(double radians);
-[[nodiscard]] double radians(double degrees);
-
-// Heading in whole degrees: [0, 360) as Stage 1.3 reported it, or (-180, 180]
-// as Gazebo did.
-enum class HeadingRange { from_0_to_360, from_minus_180_to_180 };
-[[nodiscard]] std::int32_t heading_degrees(double radians, HeadingRange range);
-
-extern template std::int16_t wire_value<std::int16_t>(double);
-extern template std::uint16_t wire_value<std::uint16_t>(double);
-extern template std::int32_t wire_value<std::int32_t>(double);
-extern template std::uint32_t wire_value<std::uint32_t>(double);
+using interfaces::degrees;
+using interfaces::heading_degrees;
+using interfaces::HeadingRange;
+using interfaces::kMillimetresPerMetre;
+using interfaces::radians;
+using interfaces::wire_value;
 
 }  // namespace playerkit::drivers::sim

@@ -6,12 +6,9 @@ namespace playerkit::drivers::p2os {
 
 namespace {
 
-constexpr int kCounterWrap = 4096;
-
 // A 12-bit counter reading as a signed distance from zero.
 int signed_counter(std::uint16_t value) {
-  const int v = value & 0x0FFF;
-  return v >= kCounterWrap / 2 ? v - kCounterWrap : v;
+  return interfaces::signed_counter_value(value, kPositionCounterBits);
 }
 
 // THPOS as a signed number of units from zero, within one turn.
@@ -26,13 +23,6 @@ int signed_heading(int units, int per_turn) {
 constexpr double kHeadingWeightMm = 250.0;
 
 }  // namespace
-
-int wrapped_step(std::uint16_t now, std::uint16_t before) {
-  int step = (now & 0x0FFF) - (before & 0x0FFF);
-  if (step >= kCounterWrap / 2) step -= kCounterWrap;
-  if (step < -kCounterWrap / 2) step += kCounterWrap;
-  return step;
-}
 
 OdometryTracker::OdometryTracker(const hardware::p2os::RobotParams& params) : params_(&params) {}
 
@@ -67,20 +57,21 @@ void OdometryTracker::update(std::uint16_t x_position, std::uint16_t y_position,
                                   heading_radians(raw.heading)};
 
   if (!session_started_) {
-    const geometry::Pose2 before = pose();
-    robot_ = from_zero;
     if (counters_are_pose_) {
       // SETO went out before this SIP: the counters count from where the
       // robot obeyed it, which is the origin. (Had this SIP left the robot
       // before it obeyed, the jump still to come is absorbed below.)
-      correction_ = {};
+      odometry_.set_robot_pose(from_zero);
+      odometry_.set_correction({});
     } else if (start_pose_) {
-      correction_ = start_pose_->compose(robot_.inverse());
+      odometry_.set_robot_pose(from_zero);
+      odometry_.set_reported(*start_pose_);
     } else if (first_session_) {
       // As 1.5: x = y = 0 at the first SIP, the heading is the robot's.
-      correction_ = {-robot_.x, -robot_.y, 0.0};
+      odometry_.set_robot_pose(from_zero);
+      odometry_.set_correction({-from_zero.x, -from_zero.y, 0.0});
     } else {
-      correction_ = before.compose(robot_.inverse());
+      odometry_.restart_counters(from_zero);
     }
     start_pose_.reset();
     counters_are_pose_ = false;
@@ -96,24 +87,22 @@ void OdometryTracker::update(std::uint16_t x_position, std::uint16_t y_position,
     if (looks_reset(raw)) {
       // The new origin is where the robot stood when it obeyed SETO, which
       // is (within one SIP) where it was last reported.
-      correction_ = pose();
-      robot_ = from_zero;
+      odometry_.counters_zeroed(from_zero);
       reset_window_ = 0;
       last_ = raw;
       return;
     }
   }
 
-  robot_.x += wrapped_step(raw.x, last_.x) * distance;
-  robot_.y += wrapped_step(raw.y, last_.y) * distance;
-  robot_.yaw = from_zero.yaw;
+  odometry_.step_position(wrapped_step(raw.x, last_.x) * distance, wrapped_step(raw.y, last_.y) * distance);
+  odometry_.set_heading(from_zero.yaw);
   last_ = raw;
 }
 
 void OdometryTracker::robot_reset_sent() {
   reset_window_ = kResetWindow;
   if (have_reading_ && session_started_) {
-    correction_ = robot_.inverse();
+    odometry_.reset_reported();
   } else {
     counters_are_pose_ = true;
     start_pose_.reset();
@@ -122,7 +111,7 @@ void OdometryTracker::robot_reset_sent() {
 
 void OdometryTracker::set_pose(const geometry::Pose2& pose) {
   if (have_reading_ && session_started_) {
-    correction_ = pose.compose(robot_.inverse());
+    odometry_.set_reported(pose);
   } else {
     // Between sessions: the next session starts from it.
     start_pose_ = pose;
@@ -130,6 +119,6 @@ void OdometryTracker::set_pose(const geometry::Pose2& pose) {
   }
 }
 
-geometry::Pose2 OdometryTracker::pose() const { return correction_.compose(robot_); }
+geometry::Pose2 OdometryTracker::pose() const { return odometry_.reported(); }
 
 }  // namespace playerkit::drivers::p2os

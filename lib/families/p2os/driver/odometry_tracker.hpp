@@ -14,13 +14,17 @@
 //    for a few SIPs after robot_reset_sent() it takes a SIP whose counters
 //    are nearer zero than the previous reading for the robot's new origin.
 //
-// Units: millimetres and radians; the row gives the raw conversions.
+// Units: millimetres and radians; the row gives the raw conversions. The
+// counter arithmetic and the reported pose's correction are the shared
+// interfaces::OdometryIntegrator; what is P2OS's own is here: 12-bit
+// counters with a whole heading, sessions, and finding SETO's jump.
 
 #include <cstdint>
 #include <optional>
 
 #include "algorithms/geometry/pose2.hpp"
 #include "families/p2os/protocol/robot_params.hpp"
+#include "interfaces/odometry_integrator.hpp"
 
 namespace playerkit::drivers::p2os {
 
@@ -50,7 +54,7 @@ class OdometryTracker {
   // x, y in mm, yaw in (-pi, pi].
   [[nodiscard]] geometry::Pose2 pose() const;
   // The robot's odometric pose (its own frame, counters unwrapped), mm and rad.
-  [[nodiscard]] const geometry::Pose2& robot_pose() const { return robot_; }
+  [[nodiscard]] const geometry::Pose2& robot_pose() const { return odometry_.robot(); }
 
  private:
   struct Raw {
@@ -63,8 +67,7 @@ class OdometryTracker {
   [[nodiscard]] bool looks_reset(const Raw& raw) const;
 
   const hardware::p2os::RobotParams* params_;
-  geometry::Pose2 robot_;       // the robot's odometry, counters unwrapped
-  geometry::Pose2 correction_;  // reported = correction_ ∘ robot_
+  interfaces::OdometryIntegrator odometry_;  // in mm: the robot's pose and the correction before it
   Raw last_;
   bool have_reading_ = false;
   bool session_started_ = false;  // false: the next reading opens a session
@@ -76,7 +79,12 @@ class OdometryTracker {
   bool counters_are_pose_ = false;
 };
 
+// XPOS and YPOS are 12 bits wide.
+inline constexpr int kPositionCounterBits = 12;
+
 // The shortest signed difference between two 12-bit counter readings.
-int wrapped_step(std::uint16_t now, std::uint16_t before);
+inline int wrapped_step(std::uint16_t now, std::uint16_t before) {
+  return interfaces::wrapped_counter_step(now, before, kPositionCounterBits);
+}
 
 }  // namespace playerkit::drivers::p2os

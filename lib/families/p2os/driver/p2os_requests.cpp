@@ -2,16 +2,17 @@
 // and they are answered on the I/O thread, so a request that sends a
 // command to the robot is ACKed once the command is on the line. Requests
 // that need the robot are NACKed while it is not answering.
-#include <cmath>
-#include <numbers>
+#include <optional>
+#include <vector>
 
 #include "families/p2os/driver/cmucam_commands.hpp"
 #include "families/p2os/driver/p2os_connection.hpp"
 #include "families/p2os/driver/robot_geometry.hpp"
+#include "interfaces/position_requests.hpp"
+#include "interfaces/ranger_requests.hpp"
+#include "interfaces/wire_units.hpp"
 #include "protocol/binary_codec.hpp"
 #include "protocol/messages/blobfinder.hpp"
-#include "protocol/messages/position.hpp"
-#include "protocol/messages/sonar.hpp"
 
 namespace playerkit::drivers::p2os {
 
@@ -30,59 +31,66 @@ core::RequestResult P2osConnection::handle_request(P2osRole role, const core::Re
 }
 
 core::RequestResult P2osConnection::position_request(const core::Request& request) {
-  const std::size_t size = request.payload.size();
-  switch (request.subtype()) {
-    case protocol::kPositionGetGeomReq:
-      if (size != 1) break;  // the subtype alone
-      return core::RequestResult::ack(protocol::encode(position_geometry()));
-    case protocol::kPositionMotorPowerReq: {
-      if (size != protocol::PositionPowerConfig::kWireSize || !session_up_) break;
-      const bool on = request.payload[1] != 0;
-      if (!send(hw::Command::with_integer(hw::command::enable, on ? 1 : 0))) break;
-      motors_wanted_ = on;
-      motors_sent_ = on;
-      return core::RequestResult::ack();
+  // The robot's side of the position requests (p2os.md §3.1); the adapter
+  // checks sizes and makes the replies. POSITION_MODE, the PIDs, the speed
+  // profile and the RMP settings stay declined, as in 1.5.
+  class RobotBase final : public interfaces::PositionBase {
+   public:
+    explicit RobotBase(P2osConnection& robot) : robot_(robot) {}
+
+    std::optional<interfaces::BaseGeometry> geometry() override { return base_geometry(); }
+
+    bool set_motor_power(bool on) override {
+      if (!robot_.session_up_ || !robot_.send(hw::Command::with_integer(hw::command::enable, on ? 1 : 0))) {
+        return false;
+      }
+      robot_.motors_wanted_ = on;
+      robot_.motors_sent_ = on;
+      return true;
     }
-    case protocol::kPositionVelocityModeReq:
-      if (size != protocol::PositionVelocityModeConfig::kWireSize) break;
-      velocity_mode_ = request.payload[1] == 0 ? VelocityMode::direct_wheel : VelocityMode::separate;
-      return core::RequestResult::ack();
-    case protocol::kPositionResetOdomReq:
-      if (size != protocol::PositionResetOdomConfig::kWireSize || !session_up_) break;
-      if (!send(hw::Command::type_only(hw::command::seto))) break;
-      odometry_.robot_reset_sent();
-      return core::RequestResult::ack();
-    case protocol::kPositionSetOdomReq: {
-      if (size != protocol::PositionSetOdomRequest::kWireSize) break;
-      const auto pose = protocol::decode<protocol::PositionSetOdomRequest>(request.payload);
-      // The whole theta, in degrees (1.5 used its upper 16 bits, quirk 6).
-      odometry_.set_pose({double(pose.x), double(pose.y), pose.theta * std::numbers::pi / 180.0});
-      return core::RequestResult::ack();
+    bool set_velocity_mode(std::uint8_t mode) override {
+      robot_.velocity_mode_ = mode == 0 ? VelocityMode::direct_wheel : VelocityMode::separate;
+      return true;
     }
-    default:
-      break;
-  }
-  return core::RequestResult::nack();
+    bool reset_odometry() override {
+      if (!robot_.session_up_ || !robot_.send(hw::Command::type_only(hw::command::seto))) return false;
+      robot_.odometry_.robot_reset_sent();
+      return true;
+    }
+    bool set_odometry(const geometry::Pose2& pose) override {
+      // The tracker counts in millimetres.
+      robot_.odometry_.set_pose({pose.x * interfaces::kMillimetresPerMetre,
+                                 pose.y * interfaces::kMillimetresPerMetre, pose.yaw});
+      return true;
+    }
+
+   private:
+    P2osConnection& robot_;
+  };
+  RobotBase base(*this);
+  return interfaces::answer_position_request(base, request);
 }
 
 core::RequestResult P2osConnection::sonar_request(const core::Request& request) {
-  const std::size_t size = request.payload.size();
-  switch (request.subtype()) {
-    case protocol::kSonarGetGeomReq:
-      if (size != 1) break;  // the subtype alone
-      return core::RequestResult::ack(protocol::encode(sonar_geometry(*params_)));
-    case protocol::kSonarPowerReq: {
-      if (size != protocol::SonarPowerConfig::kWireSize || !session_up_) break;
-      const bool on = request.payload[1] != 0;
-      if (!send(hw::Command::with_integer(hw::command::sonar, on ? 1 : 0))) break;
-      sonar_wanted_ = on;
-      sonar_sent_ = on;
-      return core::RequestResult::ack();
+  class RobotSonar final : public interfaces::RangerArray {
+   public:
+    explicit RobotSonar(P2osConnection& robot) : robot_(robot) {}
+
+    std::optional<std::vector<geometry::Pose2>> sensor_poses() override { return sonar_poses(*robot_.params_); }
+    bool set_power(bool on) override {
+      if (!robot_.session_up_ || !robot_.send(hw::Command::with_integer(hw::command::sonar, on ? 1 : 0))) {
+        return false;
+      }
+      robot_.sonar_wanted_ = on;
+      robot_.sonar_sent_ = on;
+      return true;
     }
-    default:
-      break;
-  }
-  return core::RequestResult::nack();
+
+   private:
+    P2osConnection& robot_;
+  };
+  RobotSonar sonar(*this);
+  return interfaces::answer_sonar_request(sonar, request);
 }
 
 core::RequestResult P2osConnection::blobfinder_request(const core::Request& request) {
