@@ -5,7 +5,7 @@
 //   links::Exchanger exchanger(reader, [&] { return stop.stop_requested(); }, "the robot");
 //   const auto reply = exchanger.exchange({.name = "SYNC0",
 //                                          .bytes = command_frame(Command::plain(command::sync0)),
-//                                          .matcher = echo_of(packet_type::sync0),
+//                                          .matcher = is_sync0_echo,  // mine, refusal or not_mine
 //                                          .timeout = 250ms,
 //                                          .attempts = 2});
 //

@@ -1,6 +1,7 @@
 #include "families/p2os/p2os_probe.hpp"
 
 #include <algorithm>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "families/p2os/protocol/frame_format.hpp"
 #include "families/p2os/protocol/packet_types.hpp"
 #include "families/p2os/protocol/sync.hpp"
+#include "links/exchange.hpp"
 #include "links/framed_reader.hpp"
 
 namespace playerkit::families {
@@ -27,25 +29,23 @@ void write_command(links::ByteLink& link, std::uint8_t command, links::Deadline 
   link.write_all(frame, std::max(deadline, links::deadline_in(std::chrono::milliseconds(100))));
 }
 
-// The payload of the next P2OS packet, nullopt by the deadline.
-std::optional<std::vector<std::uint8_t>> next_payload(links::FramedReader& reader, links::Deadline deadline) {
-  const auto frame = reader.next(deadline);
-  if (!frame) return std::nullopt;
-  const auto payload = p2os::frame_payload(*frame);
-  return std::vector<std::uint8_t>(payload.begin(), payload.end());
-}
-
-// Waits for a packet of type `wanted`; `on_other` sees every other one and
-// says whether to keep waiting.
-template <class OnOther>
-std::optional<std::vector<std::uint8_t>> await_packet(links::FramedReader& reader, std::uint8_t wanted,
-                                                      links::Deadline deadline, OnOther on_other) {
-  while (auto payload = next_payload(reader, deadline)) {
-    if (payload->empty()) continue;
-    if (payload->front() == wanted) return payload;
-    if (!on_other(payload->front())) return std::nullopt;
-  }
-  return std::nullopt;
+// SYNC<n>, answered by its echo by `until`. Only to SYNC0 is any other
+// packet a refusal (SIPs: a robot still connected from an earlier
+// session); a stale SYNC1/2 echo is harmless.
+links::ExchangeRequest sync_request(std::uint8_t sync, links::Deadline until) {
+  return {.name = "SYNC" + std::to_string(sync),
+          .bytes = p2os::command_frame(p2os::Command::plain(sync)),
+          .matcher =
+              [sync](std::span<const std::uint8_t> telegram) {
+                const auto payload = p2os::frame_payload(telegram);
+                if (payload.empty()) return links::ReplyMatch::not_mine;
+                if (payload.front() == sync) return links::ReplyMatch::mine;
+                const bool connected_robot = !p2os::is_sync_echo(payload.front());
+                return sync == p2os::command::sync0 && connected_robot ? links::ReplyMatch::refusal
+                                                                       : links::ReplyMatch::not_mine;
+              },
+          .timeout = links::time_until(until),
+          .flush_first = sync == p2os::command::sync0};
 }
 
 Identification found(std::string model) {
@@ -61,39 +61,23 @@ Identification found(std::string model) {
 std::optional<Identification> probe_p2os(const ProbeContext& line) {
   const p2os::P2osFrameFormat format;
   links::FramedReader reader(line.link, format, kLongestP2osFrame);
-  reader.flush();
-  write_command(line.link, p2os::command::sync0, line.first_reply);
+  links::Exchanger exchanger(reader, {}, "the robot");  // probe_port looks at its stop between probes
 
-  bool closed = false;
-  links::Deadline wait_until = line.first_reply;
-  std::optional<std::vector<std::uint8_t>> echo;
-  while (!echo) {
-    bool connected_robot = false;
-    echo = await_packet(reader, p2os::packet_type::sync0, wait_until, [&](std::uint8_t type) {
-      // SIPs: a robot connected from an earlier session. A stale SYNC1/2 echo is harmless.
-      connected_robot = !p2os::is_sync_echo(type);
-      return !connected_robot;
-    });
-    if (echo || !connected_robot || closed) break;
-    closed = true;
+  auto echo = exchanger.try_exchange(sync_request(p2os::command::sync0, line.first_reply));
+  if (echo.failure == links::ExchangeFailure::refused) {
     write_command(line.link, p2os::command::close, line.finish);
     std::this_thread::sleep_until(std::min(line.finish, links::deadline_in(kAfterClose)));
-    reader.flush();
-    write_command(line.link, p2os::command::sync0, line.finish);
-    wait_until = line.finish;
+    echo = exchanger.try_exchange(sync_request(p2os::command::sync0, line.finish));
   }
-  if (!echo) return std::nullopt;
+  if (!echo.replied()) return std::nullopt;
 
-  const auto ignore = [](std::uint8_t) { return true; };
-  write_command(line.link, p2os::command::sync1, line.finish);
-  if (!await_packet(reader, p2os::packet_type::sync1, line.finish, ignore)) {
+  if (!exchanger.try_exchange(sync_request(p2os::command::sync1, line.finish)).replied()) {
     return found("a P2OS controller (no SYNC1 echo)");
   }
-  write_command(line.link, p2os::command::sync2, line.finish);
-  const auto reply = await_packet(reader, p2os::packet_type::sync2, line.finish, ignore);
-  if (!reply) return found("a P2OS controller (no SYNC2 reply)");
+  const auto reply = exchanger.try_exchange(sync_request(p2os::command::sync2, line.finish));
+  if (!reply.replied()) return found("a P2OS controller (no SYNC2 reply)");
   try {
-    const auto names = p2os::decode_sync2_reply(*reply);
+    const auto names = p2os::decode_sync2_reply(p2os::frame_payload(reply.telegram));
     return found(names.robot_class + " " + names.subclass + " \"" + names.name + "\"");
   } catch (const p2os::DecodeError&) {
     return found("a P2OS controller (SYNC2 reply unreadable)");

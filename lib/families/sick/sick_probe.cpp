@@ -8,6 +8,7 @@
 #include "families/sick/protocol/replies.hpp"
 #include "families/sick/protocol/requests.hpp"
 #include "families/sick/protocol/telegram.hpp"
+#include "links/exchange.hpp"
 #include "links/framed_reader.hpp"
 
 namespace playerkit::families {
@@ -18,36 +19,33 @@ namespace sick = hardware::sick;
 
 constexpr std::size_t kLongestSickTelegram = sick::kHeaderSize + sick::kMaxBodyLength + sick::kCrcSize;
 
-void write_request(links::ByteLink& link, const std::vector<std::uint8_t>& telegram, links::Deadline deadline) {
-  link.write_all(telegram, std::max(deadline, links::deadline_in(std::chrono::milliseconds(100))));
-}
-
-// Waits for the reply with `code` (scans of a streaming laser are skipped).
-// Returns nullopt by the deadline.
-std::optional<sick::Reply> await_reply(links::FramedReader& reader, std::uint8_t code, links::Deadline deadline) {
-  while (auto telegram = reader.next(deadline)) {
-    try {
-      sick::Reply reply = sick::unframe_reply(*telegram);
-      if (reply.code == code || reply.code == sick::kNotAcknowledged) return reply;
-    } catch (const sick::TelegramError&) {
-      // Framed but not a reply after all: keep listening.
-    }
-  }
-  return std::nullopt;
+// `request`, answered by the reply with `code` by `until`; 92 says no. Scans
+// of a streaming laser are skipped.
+links::ExchangeRequest ask_for(const sick::Request& request, std::uint8_t code, links::Deadline until) {
+  return {.name = sick::describe(request),
+          .bytes = sick::encode_request(request),
+          .matcher =
+              [code](std::span<const std::uint8_t> telegram) {
+                try {
+                  const std::uint8_t got = sick::unframe_reply(telegram).code;
+                  if (got == code) return links::ReplyMatch::mine;
+                  if (got == sick::kNotAcknowledged) return links::ReplyMatch::refusal;
+                } catch (const sick::TelegramError&) {
+                  // Framed but not a reply after all: keep listening.
+                }
+                return links::ReplyMatch::not_mine;
+              },
+          .timeout = links::time_until(until)};
 }
 
 enum class PasswordAnswer { none, accepted, other_model };
 
-PasswordAnswer try_password(links::FramedReader& reader, links::ByteLink& link, sick::Model model,
-                            links::Deadline deadline) {
-  reader.flush();
-  write_request(link,
-                sick::encode_request(sick::InstallationModeRequest{std::string(sick::installation_password(model))}),
-                deadline);
-  const auto reply = await_reply(reader, sick::kSwitchModeReply, deadline);
-  if (!reply || reply->code != sick::kSwitchModeReply) return PasswordAnswer::none;
+PasswordAnswer try_password(links::Exchanger& exchanger, sick::Model model, links::Deadline deadline) {
+  const sick::InstallationModeRequest request{std::string(sick::installation_password(model))};
+  const auto answer = exchanger.try_exchange(ask_for(request, sick::kSwitchModeReply, deadline));
+  if (!answer.replied()) return PasswordAnswer::none;
   try {
-    const auto mode = sick::parse_mode_reply(*reply);
+    const auto mode = sick::parse_mode_reply(sick::unframe_reply(answer.telegram));
     if (mode.result == sick::ModeResult::ok) return PasswordAnswer::accepted;
     if (mode.result == sick::ModeResult::wrong_password) return PasswordAnswer::other_model;
   } catch (const sick::TelegramError&) {
@@ -68,14 +66,12 @@ Identification laser(std::string driver, std::string model, int baud) {
           .note = std::move(note)};
 }
 
-Identification identity(links::FramedReader& reader, const ProbeContext& line, sick::Model model) {
+Identification identity(links::Exchanger& exchanger, const ProbeContext& line, sick::Model model) {
   if (model == sick::Model::pls) return laser("sickpls", "PLS", line.baud);
-  reader.flush();
-  write_request(line.link, sick::encode_request(sick::GetTypeRequest{}), line.finish);
-  const auto reply = await_reply(reader, sick::kTypeReply, line.finish);
-  if (reply && reply->code == sick::kTypeReply) {
+  const auto answer = exchanger.try_exchange(ask_for(sick::GetTypeRequest{}, sick::kTypeReply, line.finish));
+  if (answer.replied()) {
     try {
-      const std::string type = sick::parse_type_reply(*reply).trimmed();
+      const std::string type = sick::parse_type_reply(sick::unframe_reply(answer.telegram)).trimmed();
       if (!type.empty()) return laser("sicklms200", type, line.baud);
     } catch (const sick::TelegramError&) {
     }
@@ -88,13 +84,14 @@ Identification identity(links::FramedReader& reader, const ProbeContext& line, s
 std::optional<Identification> probe_sick(const ProbeContext& line, sick::Model first) {
   const auto format = sick::SickFrameFormat::replies();
   links::FramedReader reader(line.link, format, kLongestSickTelegram);
+  links::Exchanger exchanger(reader, {}, "the laser");  // probe_port looks at its stop between probes
   const sick::Model other = first == sick::Model::lms200 ? sick::Model::pls : sick::Model::lms200;
-  switch (try_password(reader, line.link, first, line.first_reply)) {
+  switch (try_password(exchanger, first, line.first_reply)) {
     case PasswordAnswer::accepted:
-      return identity(reader, line, first);
+      return identity(exchanger, line, first);
     case PasswordAnswer::other_model:
-      if (try_password(reader, line.link, other, line.finish) == PasswordAnswer::accepted) {
-        return identity(reader, line, other);
+      if (try_password(exchanger, other, line.finish) == PasswordAnswer::accepted) {
+        return identity(exchanger, line, other);
       }
       return laser("sicklms200", "a SICK laser that refused both passwords", line.baud);
     case PasswordAnswer::none:

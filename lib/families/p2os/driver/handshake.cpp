@@ -4,11 +4,13 @@
 #include <array>
 #include <sstream>
 #include <string_view>
+#include <utility>
 
 #include "families/p2os/protocol/commands.hpp"
 #include "families/p2os/protocol/errors.hpp"
 #include "families/p2os/protocol/frame.hpp"
 #include "families/p2os/protocol/packet_types.hpp"
+#include "links/exchange.hpp"
 
 namespace playerkit::drivers::p2os {
 
@@ -27,31 +29,21 @@ constexpr auto kCloseDrainLimit = 1s;
 constexpr std::string_view kRadioConnected = "ected to addres";
 constexpr auto kRadioWait = 3400ms;
 
-enum class Wait { packet, none, stopped };
-
-struct Received {
-  Wait outcome = Wait::none;
-  std::vector<std::uint8_t> payload;
-};
-
-Received wait_for_packet(links::FramedReader& reader, links::Deadline until, const std::stop_token& stop) {
-  if (stop.stop_requested()) return {Wait::stopped, {}};
-  if (auto telegram = reader.next(until)) {
-    const auto payload = hw::frame_payload(*telegram);
-    return {Wait::packet, {payload.begin(), payload.end()}};
-  }
-  return {stop.stop_requested() ? Wait::stopped : Wait::none, {}};
-}
-
 links::Deadline sooner(links::Deadline a, links::Deadline b) { return std::min(a, b); }
 
-// Reads and drops telegrams until the line has been quiet for a while.
-void drain_after_close(links::FramedReader& reader) {
+// Reads and drops telegrams until the line has been quiet for a while;
+// false when the driver is stopping.
+bool drain_after_close(links::Exchanger& exchanger) {
   const links::Deadline limit = links::deadline_in(kCloseDrainLimit);
-  while (links::LinkClock::now() < limit) {
-    if (!reader.next(sooner(limit, links::deadline_in(kCloseQuiet)))) break;
+  try {
+    while (links::LinkClock::now() < limit) {
+      if (!exchanger.next(sooner(limit, links::deadline_in(kCloseQuiet)))) break;
+    }
+  } catch (const links::ExchangeError&) {
+    return false;
   }
-  reader.flush();
+  exchanger.reader().flush();
+  return true;
 }
 
 bool dial_radio(links::ByteLink& link, links::Deadline deadline) {
@@ -69,46 +61,58 @@ bool dial_radio(links::ByteLink& link, links::Deadline deadline) {
   return false;
 }
 
+// SYNC<n>: the reply's type byte is the command's number (SYNC2's reply
+// also names the robot).
+// A stale echo of an earlier try is skipped; anything else (SIPs) is a
+// robot still connected from an earlier session, refusing to synchronise.
+links::ExchangeRequest sync_request(std::uint8_t sync, links::LinkClock::duration timeout) {
+  return {.name = "SYNC" + std::to_string(sync),
+          .bytes = hw::command_frame(hw::Command::plain(sync)),
+          .matcher =
+              [sync](std::span<const std::uint8_t> telegram) {
+                const auto payload = hw::frame_payload(telegram);
+                if (!payload.empty() && payload.front() == sync) return links::ReplyMatch::mine;
+                if (payload.empty() || hw::is_sync_echo(payload.front())) return links::ReplyMatch::not_mine;
+                return links::ReplyMatch::refusal;
+              },
+          .timeout = timeout,
+          // What comes after SYNC0's echo belongs to this handshake.
+          .flush_first = sync == hw::command::sync0};
+}
+
+// SYNC0, SYNC1, SYNC2 at the current speed: SYNC2's reply, or the failure.
+links::ExchangeOutcome synchronise(links::Exchanger& exchanger, const HandshakeSettings& settings,
+                                   links::Deadline deadline) {
+  links::ExchangeOutcome outcome;
+  for (std::uint8_t sync = hw::command::sync0; sync <= hw::command::sync2; ++sync) {
+    const auto timeout = std::min<links::LinkClock::duration>(settings.reply_timeout, links::time_until(deadline));
+    outcome = exchanger.try_exchange(sync_request(sync, timeout));
+    if (!outcome.replied()) break;
+  }
+  return outcome;
+}
+
 enum class Attempt { connected, no_answer, stopped };
 
-// One SYNC0 ... SYNC2 exchange at the current speed.
-Attempt attempt(links::ByteLink& link, links::FramedReader& reader, const HandshakeSettings& settings,
-                links::Deadline deadline, const std::stop_token& stop, HandshakeResult& result) {
-  reader.flush();
-  send_command(link, hw::Command::plain(hw::command::sync0));
-  std::uint8_t expecting = hw::packet_type::sync0;
-  bool closed_once = false;
-  links::Deadline until = sooner(deadline, links::deadline_in(settings.reply_timeout));
-  for (;;) {
-    const Received got = wait_for_packet(reader, until, stop);
-    if (got.outcome == Wait::stopped) return Attempt::stopped;
-    if (got.outcome == Wait::none) return Attempt::no_answer;
-    const std::uint8_t type = got.payload.front();
-    if (type == expecting) {
-      if (type == hw::packet_type::sync2) {
-        try {
-          result.identity = hw::decode_sync2_reply(got.payload);
-        } catch (const hw::DecodeError&) {
-          return Attempt::no_answer;
-        }
-        send_command(link, hw::Command::plain(hw::command::open));
-        send_command(link, hw::Command::plain(hw::command::pulse));
-        return Attempt::connected;
+Attempt attempt(links::ByteLink& link, links::Exchanger& exchanger, const HandshakeSettings& settings,
+                links::Deadline deadline, HandshakeResult& result) {
+  for (bool closed_once = false;; closed_once = true) {
+    const links::ExchangeOutcome outcome = synchronise(exchanger, settings, deadline);
+    if (outcome.replied()) {
+      try {
+        result.identity = hw::decode_sync2_reply(hw::frame_payload(outcome.telegram));
+      } catch (const hw::DecodeError&) {
+        return Attempt::no_answer;
       }
-      ++expecting;
-      send_command(link, hw::Command::plain(expecting));  // SYNC1, SYNC2
-      until = sooner(deadline, links::deadline_in(settings.reply_timeout));
-      continue;
+      send_command(link, hw::Command::plain(hw::command::open));
+      send_command(link, hw::Command::plain(hw::command::pulse));
+      return Attempt::connected;
     }
-    if (hw::is_sync_echo(type)) continue;  // a stale echo of an earlier try
-    if (closed_once) return Attempt::no_answer;
+    if (outcome.failure == links::ExchangeFailure::stopped) return Attempt::stopped;
+    if (outcome.failure == links::ExchangeFailure::no_reply || closed_once) return Attempt::no_answer;
     // Still connected from an earlier session: close it and start over.
     send_command(link, hw::Command::plain(hw::command::close));
-    drain_after_close(reader);
-    closed_once = true;
-    send_command(link, hw::Command::plain(hw::command::sync0));
-    expecting = hw::packet_type::sync0;
-    until = sooner(deadline, links::deadline_in(settings.reply_timeout));
+    if (!drain_after_close(exchanger)) return Attempt::stopped;
   }
 }
 
@@ -128,7 +132,9 @@ std::optional<HandshakeResult> run_handshake(links::ByteLink& link, links::Frame
                                              const HandshakeSettings& settings, links::Deadline deadline,
                                              const std::stop_token& stop) {
   const auto started = links::LinkClock::now();
+  links::Exchanger exchanger(reader, [&stop] { return stop.stop_requested(); }, "the robot");
   HandshakeResult result;
+  bool first_try = true;
   if (settings.radio) result.radio_connected = dial_radio(link, deadline);
 
   // A link without a line speed of its own (TCP) is simply asked again.
@@ -151,7 +157,9 @@ std::optional<HandshakeResult> run_handshake(links::ByteLink& link, links::Frame
           if (settings.radio && !result.radio_connected) message << " (the radio modem never reported a connection)";
           throw HandshakeFailed(message.str());
         }
-        switch (attempt(link, reader, settings, deadline, stop, result)) {
+        // Every SYNC0 after the first is the same request sent again.
+        if (!std::exchange(first_try, false)) link.counters().retries.add();
+        switch (attempt(link, exchanger, settings, deadline, result)) {
           case Attempt::connected:
             result.baud = has_baud ? link.baud() : 0;
             return result;

@@ -40,29 +40,18 @@ sick::Reply SickLaserControl::ask(const sick::Request& request, std::uint8_t exp
                                   const std::string& step) {
   // A reply lost to line noise is asked for again; every step here may be
   // repeated without harm (T2, which may not, does not come through here).
-  for (int attempt = 1;; ++attempt) {
-    try {
-      return session_.exchange(request, expected, reply_timeout_);
-    } catch (const SickExchangeError& e) {
-      if (e.kind() == SickExchangeError::Kind::no_reply && attempt < kAttempts) continue;
-      if (e.kind() == SickExchangeError::Kind::stopped) throw;
-      throw SickSetupError(failure(step + ": " + e.what()));
-    }
+  try {
+    return session_.exchange(request, expected, reply_timeout_, kAttempts);
+  } catch (const SickExchangeError& e) {
+    if (e.kind() == SickExchangeError::Kind::stopped) throw;
+    throw SickSetupError(failure(step + ": " + e.what()));
   }
 }
 
 void SickLaserControl::enter_installation_mode() {
   const std::string password(sick::installation_password(model_));
-  sick::Reply reply;
-  for (int attempt = 1;; ++attempt) {
-    try {
-      reply = session_.exchange(sick::InstallationModeRequest{password}, sick::kSwitchModeReply, reply_timeout_);
-      break;
-    } catch (const SickExchangeError& e) {
-      if (e.kind() != SickExchangeError::Kind::no_reply || attempt >= kAttempts) throw;
-    }
-  }
-  const sick::ModeReply mode = sick::parse_mode_reply(reply);
+  const sick::ModeReply mode = sick::parse_mode_reply(
+      session_.exchange(sick::InstallationModeRequest{password}, sick::kSwitchModeReply, reply_timeout_, kAttempts));
   if (mode.result == sick::ModeResult::wrong_password) {
     const std::string other = model_ == Model::lms200 ? "a SICK PLS (driver sickpls)" : "a SICK LMS (driver sicklms200)";
     throw SickSetupError(failure("the laser refused the password " + password + " (A0 01): is it " + other + "?"));
@@ -89,9 +78,9 @@ int SickLaserControl::find(const std::vector<int>& rates) {
     }
   }
   const std::string tried = has_speed ? " at " + join_rates(rates) + " baud" : "";
+  // The exchange's message says how many tries of how long.
   throw SickSetupError(failure("no answer from the " + model_name(model_) + tried + " (" + last_problem +
-                               ", " + std::to_string(kAttempts) + " tries" + (has_speed ? " at each speed" : "") +
-                               "): is it powered and connected to this port?"));
+                               (has_speed ? " at each speed" : "") + "): is it powered and connected to this port?"));
 }
 
 void SickLaserControl::switch_rate(int baud) {
