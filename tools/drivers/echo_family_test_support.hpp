@@ -10,6 +10,8 @@
 //   anything else     -> device "ERR"
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <deque>
 #include <memory>
 #include <mutex>
@@ -23,6 +25,7 @@
 #include "emulators/emulator_option_reader.hpp"
 #include "families/family_spec.hpp"
 #include "framing/terminated_line_format.hpp"
+#include "hardware_driver/serial_device_driver.hpp"
 #include "links/framed_reader.hpp"
 #include "links/link_error.hpp"
 #include "links/open_link.hpp"
@@ -89,58 +92,36 @@ std::optional<std::string> ask_line(links::ByteLink& link, links::FramedReader& 
   return std::nullopt;
 }
 
-// The comms device of an echo box: each command is said, each line heard is published.
-class EchoLineDriver final : public core::ThreadedDriver {
+// The comms device of an echo box: each command is said, each line heard is
+// published. The port, its loss and recovery, the counters, the trace and
+// the thread's sleep come from the base.
+class EchoLineDriver final : public hardware_driver::SerialDeviceDriver {
  public:
-  explicit EchoLineDriver(std::string port) : port_(std::move(port)) {}
+  explicit EchoLineDriver(std::string port) : SerialDeviceDriver(std::move(port), {.baud = 9600}, {}) {}
 
-  void open() override {
-    std::lock_guard lock(mutex_);
-    try {
-      link_ = links::open_link(port_, {.baud = 9600});
-    } catch (const links::LinkError& e) {
-      throw core::DriverError(e.what());
+ protected:
+  void start_device(links::ByteLink& link, bool /*recovering*/) override {
+    reader_ = std::make_unique<links::FramedReader>(link, format_, kLongestLine);
+  }
+  void serve(links::ByteLink& link, const core::Wakeup::Woken& woke) override {
+    device().service_requests();
+    while (const auto command = device().take_command()) {
+      link.write_all(line_bytes("SAY " + std::string(command->payload.begin(), command->payload.end())),
+                     links::deadline_in(std::chrono::seconds(1)));
     }
-    install_trace();
+    if (!woke.readable) return;
+    // Every whole line there is, without waiting for the rest of one.
+    while (const auto line = reader_->next(links::Deadline{})) device().publish({line->begin(), line->end() - 1});
+    ++looks_;
   }
-  void close() override {
-    std::lock_guard lock(mutex_);
-    link_.reset();
-  }
-  void run(std::stop_token stop) override {
-    links::FramedReader reader(*link_, format_, kLongestLine);
-    while (!stop.stop_requested()) {
-      device().service_requests();
-      while (const auto command = device().take_command()) {
-        link_->write_all(line_bytes("SAY " + std::string(command->payload.begin(), command->payload.end())),
-                         links::deadline_in(std::chrono::seconds(1)));
-      }
-      if (const auto line = reader.next(links::deadline_in(std::chrono::milliseconds(20)))) {
-        device().publish({line->begin(), line->end() - 1});
-      }
-    }
-  }
-  bool set_byte_trace(core::ByteTrace trace) override {
-    std::lock_guard lock(mutex_);
-    trace_ = std::move(trace);
-    install_trace();
-    return true;
-  }
+  [[nodiscard]] Clock::time_point next_deadline() const override { return Clock::time_point::max(); }
+  void link_closing() noexcept override { reader_.reset(); }
+  [[nodiscard]] std::uint64_t own_timeouts() const override { return looks_.load(); }
 
  private:
-  void install_trace() {
-    if (!link_) return;
-    link_->set_trace_hook([trace = trace_](links::Direction direction, std::span<const std::uint8_t> bytes,
-                                           links::LinkClock::time_point when) {
-      if (trace) trace(direction == links::Direction::out, bytes, when);
-    });
-  }
-
-  std::string port_;
   framing::TerminatedLineFormat format_{echo_lines()};
-  std::mutex mutex_;
-  std::unique_ptr<links::ByteLink> link_;
-  core::ByteTrace trace_;
+  std::unique_ptr<links::FramedReader> reader_;
+  std::atomic<std::uint64_t> looks_{0};  // reads that found no whole line: not timeouts
 };
 
 std::optional<families::Identification> probe_echo(const families::ProbeContext& line) {

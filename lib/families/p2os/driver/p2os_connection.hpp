@@ -1,8 +1,9 @@
 #pragma once
-// One Pioneer on one serial line, shared by the robot's p2os devices
-// (core::SharedConnection): the first device set up opens the line and runs
-// the handshake, then one I/O thread does everything else until the last
-// device leaves:
+// One Pioneer on one serial line, shared by the robot's p2os devices, on
+// hardware_driver::RobotConnection (the line, its I/O thread woken by the
+// devices, losing and finding the robot, the counters and the trace). The
+// first device set up opens the line and runs the handshake (connect());
+// then the I/O thread, in serve():
 //
 //  * reads packets: SIPs (odometry, sensors), GYROPAC, SERAUX2 (CMUcam);
 //  * publishes every attached device's data once per SIP, all with the same
@@ -13,12 +14,12 @@
 //    subscription edges, GRIPPER, SOUND, CMUcam polling;
 //  * answers the devices' requests, each device with its own queue (1.5
 //    shared one queue of length 1 between all eleven, quirk 15);
-//  * notices a silent robot (no SIP for sip_timeout): one log line, the
-//    devices unavailable, then handshakes in the background until the robot
-//    answers again (one log line); 1.5 never noticed (quirk 3).
+//  * notices a silent robot (no SIP for sip_timeout; 1.5 never noticed,
+//    quirk 3), after which reconnect() handshakes in the background, one
+//    speed per attempt, the last good one first.
 //
 // When the last device leaves, the robot is stopped (STOP, ENABLE 0), sent
-// CLOSE, and the line closed.
+// CLOSE (stop_motion()), and the line closed.
 
 #include <atomic>
 #include <chrono>
@@ -34,7 +35,6 @@
 #include "core/device.hpp"
 #include "core/driver.hpp"
 #include "core/logger.hpp"
-#include "core/shared_connection.hpp"
 #include "families/p2os/driver/handshake.hpp"
 #include "families/p2os/driver/motor_commands.hpp"
 #include "families/p2os/driver/odometry_tracker.hpp"
@@ -45,13 +45,13 @@
 #include "families/p2os/protocol/frame_format.hpp"
 #include "families/p2os/protocol/robot_params.hpp"
 #include "families/p2os/protocol/sync.hpp"
+#include "hardware_driver/robot_connection.hpp"
 #include "links/byte_link.hpp"
 #include "links/framed_reader.hpp"
-#include "links/link_counters.hpp"
 
 namespace playerkit::drivers::p2os {
 
-class P2osConnection final : public core::SharedConnection {
+class P2osConnection final : public hardware_driver::RobotConnection {
  public:
   P2osConnection(RobotLinkOptions options, core::Logger& logger);
   ~P2osConnection() override;
@@ -66,24 +66,11 @@ class P2osConnection final : public core::SharedConnection {
   // A device's request, on the I/O thread (through Device::service_requests).
   core::RequestResult handle_request(P2osRole role, const core::Request& request);
 
-  // The link's counters summed over every session, plus the robot's.
-  [[nodiscard]] std::vector<core::DriverCounter> counters() const;
-  // Every byte of the line from now on (also across reopening).
-  void set_byte_trace(core::ByteTrace trace);
-
   [[nodiscard]] const RobotLinkOptions& options() const { return options_; }
-  // A session is up: the handshake succeeded and SIPs are arriving.
-  [[nodiscard]] bool robot_answering() const { return session_up_.load(); }
   // The SYNC2 reply of the current (or last) session.
   [[nodiscard]] std::optional<hardware::p2os::Sync2Reply> identity() const;
   // The speed the robot answered at (0 on TCP, or before the first session).
   [[nodiscard]] int baud() const { return baud_.load(); }
-  // CPU time the I/O thread has used, while it runs.
-  [[nodiscard]] std::optional<std::chrono::nanoseconds> io_thread_cpu_time() const;
-
- protected:
-  void open() override;
-  void close() noexcept override;
 
  private:
   struct View {
@@ -93,15 +80,22 @@ class P2osConnection final : public core::SharedConnection {
   };
   enum class CmucamPhase { off, resetting, tracking };
 
-  // --- lifecycle (p2os_connection.cpp)
-  void run(const std::stop_token& stop);
-  void step();
+  // --- the robot's life (p2os_connection.cpp)
+  void connect(links::ByteLink& link) override;
+  bool reconnect(links::ByteLink& link, Attempt attempt, const std::stop_token& stop) override;
+  void serve(links::ByteLink& link, const core::Wakeup::Woken& woke) override;
+  [[nodiscard]] Clock::time_point next_deadline() const override;
+  void serve_while_away() override;
+  void robot_lost() override;
+  void stop_motion(links::ByteLink& link) noexcept override;
+  // sips, unknown_packets, bad_packets.
+  [[nodiscard]] std::vector<core::DriverCounter> protocol_counters() const override;
+  [[nodiscard]] std::uint64_t own_timeouts() const override { return line_looks_.load(); }
+  // Every whole packet the line holds now, without waiting for more.
+  void read_packets();
   void handle_telegram(const std::vector<std::uint8_t>& telegram);
   void start_session(const HandshakeResult& result);
-  void lose_robot(const std::string& reason);
-  void reconnect(const std::stop_token& stop);
   [[nodiscard]] HandshakeSettings handshake_settings() const;
-  [[nodiscard]] std::string label() const;  // "p2os /dev/ttyS0"
 
   // --- the cycle (p2os_cycle.cpp), all on the I/O thread with views_mutex_ held
   void serve_views(std::chrono::steady_clock::time_point now);
@@ -122,32 +116,22 @@ class P2osConnection final : public core::SharedConnection {
   core::RequestResult blobfinder_request(const core::Request& request);
 
   const RobotLinkOptions options_;
-  core::Logger& logger_;
   const hardware::p2os::P2osFrameFormat format_;
-
-  // The link: replaced at open(), read by counters() and set_byte_trace()
-  // from other threads under link_mutex_.
-  mutable std::mutex link_mutex_;
-  std::shared_ptr<links::ByteLink> link_;
-  core::ByteTrace trace_;
-  links::LinkCounterSnapshot closed_totals_;  // of links closed before
 
   mutable std::mutex views_mutex_;
   std::vector<View> views_;
 
-  std::jthread thread_;
+  // The handshake succeeded and the robot has not been lost since.
   std::atomic<bool> session_up_{false};
   std::atomic<int> baud_{0};
   mutable std::mutex identity_mutex_;
   std::optional<hardware::p2os::Sync2Reply> identity_;
 
   // Figures for counters(), written by the I/O thread.
-  std::atomic<std::uint64_t> poll_timeouts_{0};  // the loop's own short waits, not timeouts
+  std::atomic<std::uint64_t> line_looks_{0};  // reads that found no whole packet: not timeouts
   std::atomic<std::uint64_t> sips_{0};
   std::atomic<std::uint64_t> unknown_packets_{0};
   std::atomic<std::uint64_t> bad_packets_{0};
-  std::atomic<std::uint64_t> robot_losses_{0};
-  std::atomic<std::uint64_t> reconnects_{0};
 
   // --- everything below belongs to the I/O thread (and to open()/close()
   // while it is not running)
@@ -157,8 +141,6 @@ class P2osConnection final : public core::SharedConnection {
   OdometryTracker odometry_;
   std::optional<std::string> link_error_;  // a write failed: lose the robot
   std::chrono::steady_clock::time_point last_sip_;
-  std::chrono::steady_clock::time_point lost_at_;
-  int reconnect_attempt_ = 0;
   bool new_sip_ = false;
   bool motor_sent_this_cycle_ = false;
   bool packet_sent_this_cycle_ = false;

@@ -30,7 +30,7 @@ constexpr auto kCmucamPollRetry = 1s;
 bool P2osConnection::send(const hw::Command& command) {
   if (link_error_) return false;
   try {
-    send_command(*link_, command);
+    send_command(link(), command);
   } catch (const links::LinkError& e) {
     link_error_ = e.what();
     return false;

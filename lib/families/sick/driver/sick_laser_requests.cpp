@@ -48,7 +48,7 @@ core::RequestResult SickLaserDriver::set_config(const core::Request& request) {
                 " bytes, player_laser_config_t is " + std::to_string(protocol::LaserConfig::kWireSize));
     return core::RequestResult::nack();
   }
-  if (lost_) {
+  if (lost() || lost_in_request_) {
     log.warning(where() + ": SET_CONFIG refused: the laser is not answering");
     return core::RequestResult::nack();
   }
@@ -85,12 +85,13 @@ core::RequestResult SickLaserDriver::set_config(const core::Request& request) {
       laser.stream(scan_);
       last_scan_ = std::chrono::steady_clock::now();
     } catch (const SickSetupError& e) {
-      lose_laser(std::string("the previous configuration could not be restored: ") + e.what(), false);
+      lost_in_request_ = std::string("the previous configuration could not be restored: ") + e.what();
     }
   } catch (const SickExchangeError&) {
     // Only `stopped` gets here: the driver is going away.
   } catch (const links::LinkError& e) {
-    lose_laser(e.what(), true);
+    lost_in_request_ = e.what();
+    port_gone_in_request_ = true;
   }
   return core::RequestResult::nack();
 }
