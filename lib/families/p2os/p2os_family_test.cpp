@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "emulators/catalog/emulator_catalog.hpp"
@@ -186,6 +187,32 @@ TEST(P2osFamily, ProbeTriesTheFiveRatesOfAPioneer) {
   ASSERT_EQ(progress.size(), 5u);
   EXPECT_EQ(progress.front(), silent.slave_path() + ": P2OS at 9600 8N1: no answer");
   EXPECT_EQ(progress.back(), silent.slave_path() + ": P2OS at 57600 8N1: no answer");
+}
+
+// A line that sends back whatever it is sent: a loopback plug, a modem, a
+// PTU-46 fresh from power-up.
+class EchoingLine final : public emulators::DeviceEmulator {
+ public:
+  void receive(std::span<const std::uint8_t> bytes, emulators::Duration, int) override {
+    output_.push_back({std::vector<std::uint8_t>(bytes.begin(), bytes.end()), false});
+  }
+  void advance(emulators::Duration) override {}
+  [[nodiscard]] emulators::Duration next_deadline() const override { return emulators::Duration::max(); }
+  std::vector<emulators::Telegram> take_output() override { return std::exchange(output_, {}); }
+  [[nodiscard]] std::string describe() const override { return "an echoing line"; }
+
+ private:
+  std::vector<emulators::Telegram> output_;
+};
+
+TEST(P2osFamily, ProbeDoesNotTakeALineThatEchoesForAPioneer) {
+  // SYNC0 and SYNC1 come back as a robot would send them; SYNC2 tells.
+  emulators::EmulatorRunner line(std::make_unique<EchoingLine>(), emulators::PtyEndpoint{});
+  ProbeSettings quick;
+  quick.first_reply = 100ms;
+  const ProbeResult result = probe(line.device_path(), quick);
+  EXPECT_FALSE(result.found) << result.found->model;
+  EXPECT_FALSE(result.port_unusable);
 }
 
 }  // namespace p2os_family_test

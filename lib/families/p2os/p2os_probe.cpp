@@ -74,8 +74,13 @@ std::optional<Identification> probe_p2os(const ProbeContext& line) {
   if (!exchanger.try_exchange(sync_request(p2os::command::sync1, line.finish)).replied()) {
     return found("a P2OS controller (no SYNC1 echo)");
   }
-  const auto reply = exchanger.try_exchange(sync_request(p2os::command::sync2, line.finish));
+  const links::ExchangeRequest sync2 = sync_request(p2os::command::sync2, line.finish);
+  const auto reply = exchanger.try_exchange(sync2);
   if (!reply.replied()) return found("a P2OS controller (no SYNC2 reply)");
+  // A robot answers SYNC0 and SYNC1 with the same packets, so only SYNC2
+  // tells it from a line that echoes what it is sent: a loopback plug, a
+  // modem, a PTU-46 fresh from power-up.
+  if (reply.telegram == sync2.bytes) return std::nullopt;
   try {
     const auto names = p2os::decode_sync2_reply(p2os::frame_payload(reply.telegram));
     return found(names.robot_class + " " + names.subclass + " \"" + names.name + "\"");
