@@ -25,7 +25,7 @@ FamilySpec ptu46_family() {
           {
               "player-drivers info ptu46",
               "player-drivers run ptu46 port=/dev/ttyUSB0 -n 5",
-              "player-drivers run ptu46 port=/tmp/ptu --cmd pan=30,tilt=-10 --trace",
+              "player-drivers run ptu46 port=/tmp/ptu --req control-mode mode=0 --trace",
               "player-drivers emulate ptu46 --link /tmp/ptu",
           },
   };

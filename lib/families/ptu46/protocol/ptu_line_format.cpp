@@ -11,11 +11,13 @@ framing::LineOptions reply_line_options() {
 }
 
 std::optional<Reply> parse_reply_after_echo(std::string_view line) {
-  if (auto reply = parse_reply(line)) return reply;
-  // An echoed command is letters, digits and a sign, then its delimiter.
-  const std::size_t start = line.find_first_of("*!");
-  if (start == std::string_view::npos || start == 0 || line[start - 1] != ' ') return std::nullopt;
-  return parse_reply(line.substr(start));
+  // The reply starts at the first '*' or '!' that begins one: behind the
+  // echo of its command ("pr * 185.1428"), or behind line noise.
+  for (std::size_t at = line.find_first_of("*!"); at != std::string_view::npos;
+       at = line.find_first_of("*!", at + 1)) {
+    if (auto reply = parse_reply(line.substr(at))) return reply;
+  }
+  return std::nullopt;
 }
 
 }  // namespace playerkit::hardware::ptu46

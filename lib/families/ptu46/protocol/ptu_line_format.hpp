@@ -17,7 +17,7 @@ inline constexpr std::size_t kLongestReplyLine = 160;
 [[nodiscard]] framing::LineOptions reply_line_options();
 
 // The reply in a line that may begin with the echo of its command (echo is
-// on at power-up): "pr * 185.1428" reads as "* 185.1428".
+// on at power-up) or with noise: "pr * 185.1428" reads as "* 185.1428".
 [[nodiscard]] std::optional<Reply> parse_reply_after_echo(std::string_view line);
 
 }  // namespace playerkit::hardware::ptu46

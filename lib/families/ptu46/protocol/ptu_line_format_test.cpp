@@ -16,9 +16,14 @@ TEST(PtuLineFormat, ReadsAReplyBehindItsEcho) {
   EXPECT_EQ(parse_reply_after_echo("* 5")->kind, Reply::Kind::value);  // no echo at all
 }
 
+TEST(PtuLineFormat, ReadsAReplyBehindNoise) {
+  EXPECT_EQ(parse_reply_after_echo("\x13\xf0" "ed*")->kind, Reply::Kind::done);
+  EXPECT_DOUBLE_EQ(*parse_reply_after_echo("q\x02" "* 583")->number, 583);
+}
+
 TEST(PtuLineFormat, AnEchoAloneIsNoReply) {
   EXPECT_EQ(parse_reply_after_echo("pr"), std::nullopt);
-  EXPECT_EQ(parse_reply_after_echo("pr*5"), std::nullopt);  // the echo ends at its delimiter
+  EXPECT_EQ(parse_reply_after_echo("pp583"), std::nullopt);
 }
 
 TEST(PtuLineFormat, CutsAtCrLfOrEitherAlone) {
