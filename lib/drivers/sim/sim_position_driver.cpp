@@ -35,9 +35,9 @@ std::optional<std::vector<std::uint8_t>> SimPositionDriver::encode_reading(const
 }
 
 core::RequestResult SimPositionDriver::answer(World& world, const core::Request& request) {
-  // The simulated robot's side of the position requests (Stage 1.3: GET_GEOM,
-  // RESET_ODOM, SET_ODOM, MOTOR_POWER and VELOCITY_MODE as no-ops); the
-  // adapter checks sizes and makes the replies.
+  // The simulated robot's side of the position requests (as Stage 1.3:
+  // GET_GEOM, RESET_ODOM and SET_ODOM, with MOTOR_POWER and VELOCITY_MODE
+  // acknowledged and ignored); the adapter checks sizes and makes the replies.
   class SimulatedBase final : public interfaces::PositionBase {
    public:
     SimulatedBase(World& world, ModelId model) : world_(world), model_(model) {}
