@@ -160,8 +160,8 @@ int main(int argc, char** argv) {
   int missed = 0;
   cpu_before = connection.io_thread_cpu_time();
   wall_before = SteadyClock::now();
-  // Commands at random phases of the I/O thread's 5 ms wait (a fixed
-  // interval would lock onto it).
+  // Commands at random phases (a fixed interval would lock onto a polling
+  // loop's slice, as onto the 5 ms one the I/O thread had until 2026-12-07).
   std::mt19937 random(1);
   std::uniform_int_distribution<int> jitter_us(0, 5000);
   for (int i = 0; i < options.commands; ++i) {

@@ -72,12 +72,12 @@ void RobotConnection::serve_device(core::Device& device) {
   wake();
 }
 
-void RobotConnection::stop_serving(const core::Device& device) {
+void RobotConnection::stop_serving(core::Device& device) {
   {
     std::lock_guard lock(devices_mutex_);
     std::erase(devices_, &device);
   }
-  const_cast<core::Device&>(device).set_wakeup(nullptr);
+  device.set_wakeup(nullptr);
   wake();
 }
 

@@ -108,7 +108,7 @@ class RobotConnection : public core::SharedConnection {
   // thread. Throws core::DriverError while the robot is not answering.
   void serve_device(core::Device& device);
   // From its shutdown(); afterwards the base no longer touches it.
-  void stop_serving(const core::Device& device);
+  void stop_serving(core::Device& device);
   // Wakes the I/O thread (a device came or went).
   void wake() { wakeup_->notify(); }
   // For the destructor of a protocol whose devices never let go: the

@@ -60,7 +60,7 @@ void P2osConnection::add_device(P2osRole role, core::Device& device, const Motor
   views_.push_back({role, &device, limits});
 }
 
-void P2osConnection::remove_device(const core::Device& device) {
+void P2osConnection::remove_device(core::Device& device) {
   {
     std::lock_guard lock(views_mutex_);
     std::erase_if(views_, [&](const View& view) { return view.device == &device; });

@@ -61,7 +61,7 @@ class P2osConnection final : public hardware_driver::RobotConnection {
   void add_device(P2osRole role, core::Device& device, const MotorLimits& limits = {});
   // From its shutdown(), before letting go of the Use. Once this returns the
   // I/O thread no longer touches the device.
-  void remove_device(const core::Device& device);
+  void remove_device(core::Device& device);
 
   // A device's request, on the I/O thread (through Device::service_requests).
   core::RequestResult handle_request(P2osRole role, const core::Request& request);
