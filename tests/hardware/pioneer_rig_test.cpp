@@ -64,14 +64,15 @@ std::filesystem::path temp_link(const std::string& what) {
          ("pioneer_rig_test_" + std::to_string(::getpid()) + "_" + what);
 }
 
-TEST(PioneerRig, TheBuiltInFamiliesOfferTheThreeEmulators) {
+TEST(PioneerRig, TheBuiltInFamiliesOfferTheRigsEmulators) {
+  // Every family built adds its kinds; this rig needs the Pioneer and both lasers.
   const auto kinds = catalog();
-  EXPECT_EQ(kinds.names(), "p2os, sicklms200, sickpls");
+  for (const char* name : {"p2os", "sicklms200", "sickpls"}) EXPECT_NE(kinds.find(name), nullptr) << name;
   try {
     EmulatorRig rig(kinds, {{"sicklms", {}, PtyEndpoint{}}}, {});
     ADD_FAILURE() << "started";
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "no emulator 'sicklms'; there are p2os, sicklms200, sickpls");
+    EXPECT_EQ(std::string(e.what()), "no emulator 'sicklms'; there are " + kinds.names());
   }
 }
 

@@ -16,6 +16,7 @@ FamilySpec p2os_family() {
       .framing = {std::make_shared<p2os::P2osFrameFormat>(p2os::kMaxLengthByteToRobot),
                   std::make_shared<p2os::P2osFrameFormat>(p2os::kMaxLengthByteFromRobot)},
       .emulators = {p2os_emulator_kind()},
+      .drivers = {},  // built in through CMake (playerkit_driver_family)
       .examples =
           {
               "player-drivers info p2os",

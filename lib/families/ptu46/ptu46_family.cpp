@@ -20,7 +20,7 @@ FamilySpec ptu46_family() {
       // prints them as they were written; replies are lines.
       .framing = {nullptr, std::make_shared<framing::TerminatedLineFormat>(hardware::ptu46::reply_line_options())},
       .emulators = {ptu46_emulator_kind()},
-      .drivers = {},
+      .drivers = {},  // built in through CMake (playerkit_driver_family)
       .examples =
           {
               "player-drivers info ptu46",

@@ -27,6 +27,7 @@ FamilySpec sick_family() {
       .framing = {std::make_shared<sick::SickFrameFormat>(sick::SickFrameFormat::requests()),
                   std::make_shared<sick::SickFrameFormat>(sick::SickFrameFormat::replies())},
       .emulators = {sicklms200_emulator_kind(), sickpls_emulator_kind()},
+      .drivers = {},  // built in through CMake (playerkit_driver_family)
       .examples =
           {
               "player-drivers info sicklms200",
