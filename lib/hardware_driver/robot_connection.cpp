@@ -8,6 +8,7 @@
 #include <sstream>
 #include <utility>
 
+#include "links/exchange.hpp"
 #include "links/link_error.hpp"
 
 namespace playerkit::hardware_driver {
@@ -123,6 +124,11 @@ void RobotConnection::run(const std::stop_token& stop) {
       lose(e.what());
       continue;
     } catch (const links::LinkError& e) {
+      lose(e.what());
+      continue;
+    } catch (const links::ExchangeError& e) {
+      // As in SerialDeviceDriver: silence in an exchange loses the robot.
+      if (e.kind() == links::ExchangeError::Kind::stopped) break;
       lose(e.what());
       continue;
     }

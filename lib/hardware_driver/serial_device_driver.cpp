@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/device.hpp"
+#include "links/exchange.hpp"
 #include "links/link_error.hpp"
 
 namespace playerkit::hardware_driver {
@@ -73,6 +74,12 @@ void SerialDeviceDriver::run(std::stop_token stop) {
       continue;
     } catch (const links::LinkError& e) {
       lose(e.what(), true);
+      continue;
+    } catch (const links::ExchangeError& e) {
+      // An exchange that found the device silent (or refusing) is a lost
+      // device; one cut short by the stop is the stop.
+      if (e.kind() == links::ExchangeError::Kind::stopped) break;
+      lose(e.what(), false);
       continue;
     }
     woke = wakeup_->wait(next_deadline(), link_.get()->native_handle());

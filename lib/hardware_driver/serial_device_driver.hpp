@@ -88,8 +88,9 @@ class SerialDeviceDriver : public core::ThreadedDriver {
   virtual void start_device(links::ByteLink& link, bool recovering) = 0;
   // One pass of the running device, after every wake-up: input on the line
   // (woke.readable), a command or request (woke.notified), or the time from
-  // next_deadline(). Throws DeviceLost or links::LinkError when the device
-  // has gone.
+  // next_deadline(). Throws DeviceLost, links::LinkError or a
+  // links::ExchangeError (no reply, refused) when the device has gone; an
+  // exchange stopped by the driver's stop ends the thread quietly.
   virtual void serve(links::ByteLink& link, const core::Wakeup::Woken& woke) = 0;
   // When serve() must run next even with nothing arriving (a data timeout).
   [[nodiscard]] virtual Clock::time_point next_deadline() const = 0;

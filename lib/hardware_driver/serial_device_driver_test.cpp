@@ -33,7 +33,8 @@ namespace serial_device_driver_test {
 using namespace std::chrono_literals;
 using testing::eventually;
 
-const framing::LineOptions kLines{.end = framing::LineEnd::lf, .max_length = 64};
+const framing::LineOptions kLines{
+    .end = framing::LineEnd::lf, .max_length = 64, .prompt = std::nullopt, .skip_empty_lines = false, .name = "toy"};
 
 class ToyDriver final : public SerialDeviceDriver {
  public:

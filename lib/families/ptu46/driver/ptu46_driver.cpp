@@ -66,17 +66,13 @@ class Ptu46Driver final : public hardware_driver::SerialDeviceDriver, private in
   }
 
   void serve(links::ByteLink& /*link*/, const core::Wakeup::Woken& woke) override {
-    try {
-      if (woke.readable) unsolicited_lines_ += unit_->drop_unsolicited();
-      if (auto command = device().take_command()) obey(protocol::decode<protocol::PtzCommand>(command->payload));
-      device().service_requests();
-      if (Clock::now() >= next_reading_) {
-        publish_reading();
-        next_reading_ = Clock::now() + kReadingPeriod;
-      }
-    } catch (const links::ExchangeError& e) {
-      if (e.kind() == links::ExchangeError::Kind::stopped) throw hardware_driver::Stopping();
-      throw hardware_driver::DeviceLost(e.what());
+    // An exchange the unit leaves unanswered throws: the kit loses the unit.
+    if (woke.readable) unsolicited_lines_ += unit_->drop_unsolicited();
+    if (auto command = device().take_command()) obey(protocol::decode<protocol::PtzCommand>(command->payload));
+    device().service_requests();
+    if (Clock::now() >= next_reading_) {
+      publish_reading();
+      next_reading_ = Clock::now() + kReadingPeriod;
     }
   }
 

@@ -167,6 +167,27 @@ TEST_F(Ptu46ReplugTest, AUnitUnpluggedAndBackIsFoundAgain) {
   EXPECT_TRUE(unit.with([](Ptu46Emulator& e) { return e.terse(); }));  // started anew
 }
 
+struct Ptu46SilentSpellTest : Ptu46DriverTest {
+  Ptu46SilentSpellTest() : Ptu46DriverTest({.tcp = false, .symlink = {}, .faults = silent_spell()}) {}
+  static emulators::FaultPlan silent_spell() {
+    emulators::FaultPlan plan;
+    plan.vanish_at = std::chrono::seconds(1);
+    plan.vanish_for = std::chrono::seconds(2);
+    return plan;
+  }
+};
+
+// The line goes dead both ways for a while (the port stays): the unit's
+// silence loses it, and it is started again when it answers.
+TEST_F(Ptu46SilentSpellTest, AUnitThatFallsSilentIsLostAndFoundAgain) {
+  start();
+  EXPECT_FALSE(devices.log.first_with({"lost the PTU-46", "no reply"}, 10s).empty()) << devices.log.all();
+  EXPECT_FALSE(ptz().available());
+  EXPECT_FALSE(devices.log.first_with({"answers again"}, 10s).empty()) << devices.log.all();
+  EXPECT_TRUE(more_data(ptz(), 2)) << devices.log.all();
+  EXPECT_EQ(counter(ptz().driver(), "reconnects"), 1u);
+}
+
 struct Ptu46NoisyLineTest : Ptu46DriverTest {
   Ptu46NoisyLineTest() : Ptu46DriverTest({.tcp = false, .symlink = {}, .faults = noisy()}) {}
   static emulators::FaultPlan noisy() {
