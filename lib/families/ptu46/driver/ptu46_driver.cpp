@@ -99,8 +99,8 @@ class Ptu46Driver final : public hardware_driver::SerialDeviceDriver, private in
         send_if_changed(sent_positions_[i], target, ptu::set_position(axis, target));
         if (speeds[i] == 0) continue;  // 0: travel at the speed already set
       }
-      send_if_changed(sent_speeds_[i], speed_within_limits(speeds[i], limits),
-                      ptu::set_speed(axis, speed_within_limits(speeds[i], limits)));
+      const std::int64_t speed = speed_within_limits(speeds[i], limits);
+      send_if_changed(sent_speeds_[i], speed, ptu::set_speed(axis, speed));
     }
   }
 
