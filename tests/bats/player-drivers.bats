@@ -40,7 +40,7 @@ start_emulator() {
   emulator_pid=$!
   local wanted=0 word
   for word in "$@"; do
-    case "$word" in p2os | sicklms200 | sickpls) wanted=$((wanted + 1)) ;; esac
+    case "$word" in p2os | sicklms200 | sickpls | ptu46) wanted=$((wanted + 1)) ;; esac
   done
   wait_for_lines --pid "$emulator_pid" --log "$out" --log "$err" "$out" "$wanted"
 }
@@ -252,6 +252,30 @@ stop_cleanly() {
 
   stop_cleanly "$emulator_pid"
   [ ! -e "$robot" ] && [ ! -L "$robot" ]
+}
+
+@test "a pan-tilt unit: emulate, probe (no other family takes its echo), run, a request" {
+  ptu="$BATS_TEST_TMPDIR/ptu"
+  start_emulator "$BATS_TEST_TMPDIR/emulate.out" "$BATS_TEST_TMPDIR/emulate.err" ptu46 --link "$ptu"
+  grep -qx "ptu46 on $ptu: ptz:0 ( driver \"ptu46\" port \"$ptu\" )" "$BATS_TEST_TMPDIR/emulate.out"
+
+  # Fresh from power-up the unit echoes what it is sent: every family's
+  # probe at 9600 asks it before the PTU-46's does.
+  run --separate-stderr timeout 60 "$player_drivers" probe "$ptu"
+  [ "$status" -eq 0 ]
+  [[ "$output" == *"$ptu: ptu46 at 9600 baud, PTU-46, 185.1428 arc-seconds a pan position"* ]]
+  [[ "$output" == *"    ptz:0 ( driver \"ptu46\" port \"$ptu\" )"* ]]
+
+  run --separate-stderr timeout 60 "$player_drivers" run ptu46 "port=$ptu" -n 2 --format json
+  [ "$status" -eq 0 ]
+  [ "$(jq -s 'length' <<<"$output")" -eq 2 ]
+  [ "$(jq -s -r '.[0].data.panspeed' <<<"$output")" -eq 51 ]
+
+  run --separate-stderr timeout 60 "$player_drivers" run ptu46 "port=$ptu" --req control-mode mode=0 --trace
+  [ "$status" -eq 0 ]
+  [ "$(jq -r '.type' <<<"$output")" = ack ]
+  [[ "$stderr" == *"> 63 76 20"* ]]  # "cv " on the line
+  stop_cleanly "$emulator_pid"
 }
 
 @test "emulate on a TCP port, probed as tcp:HOST:PORT" {
