@@ -37,7 +37,8 @@ std::string refusal(const emulators::EmulatorOptionValues& options) {
 }
 
 TEST(Ptu46Family, OffersTheUnitAsAStandalonePtz) {
-  const emulators::EmulatorKind* unit = catalog().find("ptu46");
+  const emulators::EmulatorCatalog kinds = catalog();
+  const emulators::EmulatorKind* unit = kinds.find("ptu46");
   ASSERT_NE(unit, nullptr);
   EXPECT_EQ(unit->mount, emulators::EmulatorMount::standalone);
   EXPECT_EQ(config_example(*unit, "/tmp/ptu"), "ptz:0 ( driver \"ptu46\" port \"/tmp/ptu\" )");
