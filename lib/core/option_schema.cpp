@@ -66,19 +66,17 @@ std::string markdown_cell(std::string text) {
 
 OptionSpec::OptionSpec(std::string name, OptionType type) : name_(std::move(name)), type_(type) {}
 
-OptionSpec OptionSpec::integer(std::string name, int fallback, int minimum, int maximum) {
-  OptionSpec spec(std::move(name), OptionType::integer);
+OptionSpec OptionSpec::number(std::string name, double fallback, double minimum, double maximum) {
+  OptionSpec spec(std::move(name), OptionType::number);
   spec.number_fallback_ = fallback;
   spec.minimum_ = minimum;
   spec.maximum_ = maximum;
   return spec;
 }
 
-OptionSpec OptionSpec::number(std::string name, double fallback, double minimum, double maximum) {
-  OptionSpec spec(std::move(name), OptionType::number);
-  spec.number_fallback_ = fallback;
-  spec.minimum_ = minimum;
-  spec.maximum_ = maximum;
+OptionSpec OptionSpec::integer(std::string name, int fallback, int minimum, int maximum) {
+  OptionSpec spec = number(std::move(name), fallback, minimum, maximum);
+  spec.type_ = OptionType::integer;
   return spec;
 }
 

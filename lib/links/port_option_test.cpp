@@ -16,7 +16,7 @@ std::string error_of(std::string_view port) {
   load.driver_exists = [](std::string_view) { return true; };
   const auto file = config::ConfigFile::parse("laser:0 ( driver \"d\" port \"" + std::string(port) + "\" )\n",
                                               "ports.cfg", load);
-  const core::OptionSchema schema{port_option("/dev/ttyS1")};
+  const core::OptionSchema schema{port_option("/tmp/playerkit-test/ttyDEFAULT")};
   try {
     core::OptionReader(file.section(file.devices().front().section), "d", schema).validate();
   } catch (const config::ConfigError& e) {
@@ -26,7 +26,7 @@ std::string error_of(std::string_view port) {
 }
 
 TEST(PortOption, TtyPathsAndTcpAddressesAreAccepted) {
-  EXPECT_EQ(error_of("/dev/ttyUSB0"), "no error");
+  EXPECT_EQ(error_of("/tmp/playerkit-test/ttyLASER"), "no error");
   EXPECT_EQ(error_of("tcp:127.0.0.1:4001"), "no error");
   EXPECT_EQ(error_of("tcp:[::1]:4001"), "no error");
 }
@@ -43,11 +43,11 @@ TEST(PortOption, MalformedTcpAddressesAreRefusedAtTheValue) {
 }
 
 TEST(PortOption, IsDocumentedAsAPort) {
-  const auto rows = core::OptionSchema{port_option("/dev/ttyS1")}.docs();
+  const auto rows = core::OptionSchema{port_option("/tmp/playerkit-test/ttyDEFAULT")}.docs();
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_EQ(rows[0].name, "port");
   EXPECT_EQ(rows[0].type, "port");
-  EXPECT_EQ(rows[0].default_value, "\"/dev/ttyS1\"");
+  EXPECT_EQ(rows[0].default_value, "\"/tmp/playerkit-test/ttyDEFAULT\"");
 }
 
 }  // namespace port_option_test

@@ -144,7 +144,6 @@ TEST(Ptu46Options, BadValuesAreRefusedAtTheirPlace) {
 
 TEST_F(Ptu46DriverTest, RefusesTheSubscriptionWhenNothingAnswers) {
   unit.replug(false);
-  ::playerkit::testing::ScratchDirectory scratch;
   devices.load("ptz:0 ( driver \"ptu46\" port \"" + unit.port() + "\" )\n");
   EXPECT_FALSE(ptz().subscribe());
 }
