@@ -40,9 +40,7 @@ links::ExchangeRequest ask_for(const sick::Request& request, std::uint8_t code, 
 
 enum class PasswordAnswer { none, accepted, other_model };
 
-PasswordAnswer try_password(links::Exchanger& exchanger, sick::Model model, links::Deadline deadline) {
-  const sick::InstallationModeRequest request{std::string(sick::installation_password(model))};
-  const auto answer = exchanger.try_exchange(ask_for(request, sick::kSwitchModeReply, deadline));
+PasswordAnswer password_answer(const links::ExchangeOutcome& answer) {
   if (!answer.replied()) return PasswordAnswer::none;
   try {
     const auto mode = sick::parse_mode_reply(sick::unframe_reply(answer.telegram));
@@ -51,6 +49,40 @@ PasswordAnswer try_password(links::Exchanger& exchanger, sick::Model model, link
   } catch (const sick::TelegramError&) {
   }
   return PasswordAnswer::none;
+}
+
+PasswordAnswer ask_password(links::Exchanger& exchanger, sick::Model model, links::Deadline deadline,
+                            bool flush_first) {
+  links::ExchangeRequest request = ask_for(
+      sick::InstallationModeRequest{std::string(sick::installation_password(model))}, sick::kSwitchModeReply, deadline);
+  request.flush_first = flush_first;
+  return password_answer(exchanger.try_exchange(request));
+}
+
+// Takes the mode reply still on its way, so that it answers nothing else.
+void await_mode_reply(links::Exchanger& exchanger, links::Deadline deadline) {
+  while (const auto telegram = exchanger.next(deadline)) {
+    try {
+      if (sick::unframe_reply(*telegram).code == sick::kSwitchModeReply) return;
+    } catch (const sick::TelegramError&) {
+    }
+  }
+}
+
+// A mode reply does not say which password it answers. The probe before this
+// one asked the other model's password at this rate and gave up waiting; on
+// a loaded machine its "accepted" can arrive now, after this request went
+// out. So an accepted password is asked once more, nothing flushed: the laser
+// that has it accepts it again; the other model's "wrong password" (to the
+// first request) says the "accepted" was late, and the answer to the second
+// request is taken off the line before anything else is asked.
+PasswordAnswer try_password(links::Exchanger& exchanger, sick::Model model, links::Deadline first_reply,
+                            links::Deadline finish) {
+  const PasswordAnswer first = ask_password(exchanger, model, first_reply, /*flush_first=*/true);
+  if (first != PasswordAnswer::accepted) return first;
+  const PasswordAnswer again = ask_password(exchanger, model, finish, /*flush_first=*/false);
+  if (again == PasswordAnswer::other_model) await_mode_reply(exchanger, finish);
+  return again;
 }
 
 Identification laser(std::string driver, std::string model, int baud) {
@@ -86,11 +118,11 @@ std::optional<Identification> probe_sick(const ProbeContext& line, sick::Model f
   links::FramedReader reader(line.link, format, kLongestSickTelegram);
   links::Exchanger exchanger(reader, {}, "the laser");  // probe_port looks at its stop between probes
   const sick::Model other = first == sick::Model::lms200 ? sick::Model::pls : sick::Model::lms200;
-  switch (try_password(exchanger, first, line.first_reply)) {
+  switch (try_password(exchanger, first, line.first_reply, line.finish)) {
     case PasswordAnswer::accepted:
       return identity(exchanger, line, first);
     case PasswordAnswer::other_model:
-      if (try_password(exchanger, other, line.finish) == PasswordAnswer::accepted) {
+      if (try_password(exchanger, other, line.finish, line.finish) == PasswordAnswer::accepted) {
         return identity(exchanger, line, other);
       }
       return laser("sicklms200", "a SICK laser that refused both passwords", line.baud);

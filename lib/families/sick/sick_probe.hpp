@@ -1,7 +1,9 @@
 #pragma once
 // Asking a line "are you a SICK laser?" (sicklms200.md §2.1, sickpls.md §2):
 // installation mode with one model's password; A0 00 says it is that model,
-// A0 01 "a SICK, but the other model", so the other password follows. An LMS
+// A0 01 "a SICK, but the other model", so the other password follows. An
+// accepted password is asked again: a mode reply does not say which password
+// it answers, and a late one to the probe before may be on the line. An LMS
 // is then asked its type (T3). It is left in installation mode at the speed
 // it was found. Scans of a laser still streaming are skipped: the request
 // stops it.
