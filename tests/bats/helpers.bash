@@ -6,6 +6,7 @@ player_serve="$build_dir/tools/player-serve/player-serve"
 player_cat="$build_dir/tools/player-cat/player-cat"
 player_send="$build_dir/tools/player-send/player-send"
 player_log="$build_dir/tools/player-log/player-log"
+player_drivers="$build_dir/tools/drivers/player-drivers"
 amcl_offline="$build_dir/tools/amcl-offline/amcl-offline"
 wire_roundtrip="$build_dir/examples/wire-roundtrip/wire-roundtrip"
 bats_require_minimum_version 1.5.0
@@ -63,4 +64,27 @@ kill_left_running() {
       wait "$pid" 2>/dev/null || true
     fi
   done
+}
+
+# start_emulator OUT ERR ARGS...: `player-drivers emulate ARGS...` in the
+# background (emulator_pid); waits (PLAYERKIT_WAIT_TIMEOUT, 30 s) for its
+# stdout to name every emulated device: one line for each --link or --tcp.
+start_emulator() {
+  local out="$1" err="$2"
+  shift 2
+  : >"$out"  # no lines of an earlier emulator (see start_daemon)
+  "$player_drivers" emulate "$@" >"$out" 2>"$err" &
+  emulator_pid=$!
+  local wanted=0 word
+  for word in "$@"; do
+    case "$word" in --link | --tcp) wanted=$((wanted + 1)) ;; esac
+  done
+  wait_for_lines --pid "$emulator_pid" --log "$out" --log "$err" "$out" "$wanted"
+}
+
+# stop_cleanly PID: SIGTERM, then the exit status must be 0 (within PLAYERKIT_WAIT_TIMEOUT).
+stop_cleanly() {
+  kill -TERM "$1"
+  wait_for_exit "$1"
+  [ "$exit_status" -eq 0 ]
 }

@@ -6,8 +6,6 @@
 
 load helpers
 
-player_drivers="$build_dir/tools/drivers/player-drivers"
-
 setup() {
   # Twenty position samples 50 ms apart, replayed with autorewind.
   log="$BATS_TEST_TMPDIR/positions.log"
@@ -21,35 +19,12 @@ setup() {
 }
 
 teardown() {
-  kill_left_running "${emulator_pid:-}" "${run_pid:-}" "${holder_pid:-}" "${second_emulator_pid:-}"
+  kill_left_running "${emulator_pid:-}" "${server_pid:-}" "${run_pid:-}" "${holder_pid:-}" "${second_emulator_pid:-}"
 }
 
 # listed DRIVER: `player-drivers list` shows it (it is built).
 listed() {
   "$player_drivers" list --json | jq -s -e --arg name "$1" 'any(.[]; .name == $name)' >/dev/null
-}
-
-# start_emulator OUT ERR ARGS...: `player-drivers emulate ARGS...` in the
-# background; waits (PLAYERKIT_WAIT_TIMEOUT, 30 s) for its stdout to name
-# every emulator.
-start_emulator() {
-  local out="$1" err="$2"
-  shift 2
-  : >"$out"  # no lines of an earlier emulator (see start_daemon)
-  "$player_drivers" emulate "$@" >"$out" 2>"$err" &
-  emulator_pid=$!
-  local wanted=0 word
-  for word in "$@"; do
-    case "$word" in p2os | sicklms200 | sickpls | ptu46) wanted=$((wanted + 1)) ;; esac
-  done
-  wait_for_lines --pid "$emulator_pid" --log "$out" --log "$err" "$out" "$wanted"
-}
-
-# stop PID: SIGTERM, then the exit status must be 0 (within PLAYERKIT_WAIT_TIMEOUT).
-stop_cleanly() {
-  kill -TERM "$1"
-  wait_for_exit "$1"
-  [ "$exit_status" -eq 0 ]
 }
 
 @test "--help has examples for each subcommand and the exit codes" {
@@ -275,6 +250,20 @@ stop_cleanly() {
   [ "$status" -eq 0 ]
   [ "$(jq -r '.type' <<<"$output")" = ack ]
   [[ "$stderr" == *"> 63 76 20"* ]]  # "cv " on the line
+  stop_cleanly "$emulator_pid"
+}
+
+@test "data/config/ptu46.cfg serves the emulated unit" {
+  ptu="$BATS_TEST_TMPDIR/ptu46"
+  start_emulator "$BATS_TEST_TMPDIR/emulate.out" "$BATS_TEST_TMPDIR/emulate.err" ptu46 --link "$ptu"
+  sed "s|\"/tmp/ptu46\"|\"$ptu\"|" "$repo_root/data/config/ptu46.cfg" >"$BATS_TEST_TMPDIR/ptu46.cfg"
+  grep -q "port \"$ptu\"" "$BATS_TEST_TMPDIR/ptu46.cfg"
+  start_server "$BATS_TEST_TMPDIR/serve.err" -p 0 "$BATS_TEST_TMPDIR/ptu46.cfg"
+  run --separate-stderr timeout 60 "$player_cat" "localhost:$server_port" ptz:0 -n 2 --format json
+  [ "$status" -eq 0 ]
+  [ "$(jq -s 'length' <<<"$output")" -eq 2 ]
+  [ "$(jq -s -r '.[0].device' <<<"$output")" = ptz ]
+  stop_cleanly "$server_pid"
   stop_cleanly "$emulator_pid"
 }
 
