@@ -252,6 +252,16 @@ void Device::service_requests() {
 }
 
 void Device::post_reply(Reply reply) {
+  if (reply.client >= kFirstDriverClient) {
+    {
+      std::lock_guard lock(mutex_);
+      // One that gave up waiting is not waiting any more: its late reply goes.
+      if (std::find(awaited_.begin(), awaited_.end(), reply.client) == awaited_.end()) return;
+      driver_replies_.push_back(std::move(reply));
+    }
+    driver_reply_arrived_.notify_all();
+    return;
+  }
   {
     std::lock_guard lock(mutex_);
     replies_.push_back(std::move(reply));
@@ -262,6 +272,31 @@ void Device::post_reply(Reply reply) {
 std::vector<Reply> Device::take_replies() {
   std::lock_guard lock(mutex_);
   return std::exchange(replies_, {});
+}
+
+void Device::expect_reply(ClientId client) {
+  std::lock_guard lock(mutex_);
+  awaited_.push_back(client);
+}
+
+std::optional<Reply> Device::await_reply(ClientId client, std::chrono::steady_clock::time_point deadline) {
+  std::unique_lock lock(mutex_);
+  std::optional<Reply> found;
+  driver_reply_arrived_.wait_until(lock, deadline, [&] {
+    const auto it = std::find_if(driver_replies_.begin(), driver_replies_.end(),
+                                 [client](const Reply& reply) { return reply.client == client; });
+    if (it == driver_replies_.end()) return false;
+    found = std::move(*it);
+    driver_replies_.erase(it);
+    return true;
+  });
+  return found;
+}
+
+void Device::forget_reply(ClientId client) {
+  std::lock_guard lock(mutex_);
+  std::erase(awaited_, client);
+  std::erase_if(driver_replies_, [client](const Reply& reply) { return reply.client == client; });
 }
 
 void Device::add_listener(DeviceListener* listener) {

@@ -13,6 +13,7 @@
 // All members are thread-safe unless noted.
 
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
@@ -159,7 +160,15 @@ class Device {
   void service_requests();
   // For drivers that answer later than handle_request() returns.
   void post_reply(Reply reply);
+  // The replies for the server's clients (ids below kFirstDriverClient).
   std::vector<Reply> take_replies();
+
+  // --- a driver's requests to this device (core/source_request.hpp)
+  // A reply for a driver client is kept for the one awaiting it, from
+  // expect_reply() to forget_reply(), and dropped when nobody awaits it.
+  void expect_reply(ClientId client);
+  std::optional<Reply> await_reply(ClientId client, std::chrono::steady_clock::time_point deadline);
+  void forget_reply(ClientId client);
 
   // --- waking the driver
   // Notified after every accepted command and queued request, so that a
@@ -208,6 +217,9 @@ class Device {
   std::deque<Command> command_queue_;  // command-queue devices only
   std::deque<Request> requests_;
   std::vector<Reply> replies_;
+  std::vector<ClientId> awaited_;       // driver clients waiting for a reply
+  std::vector<Reply> driver_replies_;   // their replies, until taken
+  std::condition_variable driver_reply_arrived_;
   std::shared_ptr<Wakeup> wakeup_;
 
   const std::shared_ptr<ReaderProgress> readers_ = std::make_shared<ReaderProgress>();

@@ -18,6 +18,9 @@ using protocol::Timestamp;
 // its connections from 1; drivers that talk to other devices use their own ids.
 using ClientId = std::uint64_t;
 inline constexpr ClientId kNoClient = 0;
+// Drivers asking the devices they are built on number themselves from here
+// (core/source_request.hpp), far above any count of server connections.
+inline constexpr ClientId kFirstDriverClient = ClientId{1} << 62;
 
 // The latest data a device published. sequence counts publications from 1; 0
 // means the device has never published.
