@@ -149,7 +149,8 @@ void PowercubeEmulator::start_motion(Axis& axis, const std::vector<std::uint8_t>
   if (data.size() >= 8 && data[1] == static_cast<std::uint8_t>(pc::MotionMode::step)) {
     axis.target = std::clamp(static_cast<double>(pc::float_from_bits(pc::read_u32(std::span(data).subspan(2, 4)))),
                              axis.min, axis.max);
-    const double seconds = (data[6] | data[7] << 8) / 1000.0;
+    axis.step_time = data[6] | data[7] << 8;
+    const double seconds = axis.step_time / 1000.0;
     const double distance = std::fabs(axis.target - axis.position);
     // The speed of a trapezoid from rest that covers `distance` in `seconds`;
     // a step too short for it goes flat out and arrives late.

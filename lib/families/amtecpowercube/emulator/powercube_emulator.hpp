@@ -57,6 +57,8 @@ class PowercubeEmulator final : public DeviceEmulator {
   [[nodiscard]] std::uint64_t frames() const { return frames_; }
   [[nodiscard]] std::uint64_t bad_checks() const { return bad_checks_; }
   [[nodiscard]] std::uint64_t homings(Module module) const { return axis(module).homings; }
+  // The time the last step was given to arrive in, ms.
+  [[nodiscard]] int step_time(Module module) const { return axis(module).step_time; }
   // A module fault (a following error, an overheated motor): it stops and
   // sets its error bit until RESET.
   void raise_error(Module module);
@@ -72,6 +74,7 @@ class PowercubeEmulator final : public DeviceEmulator {
     double target = 0;        // step and homing: rad; velocity: rad/s
     double cruise = 0;        // step: the speed that arrives on time, rad/s
     std::uint64_t homings = 0;
+    int step_time = 0;
   };
   [[nodiscard]] const Axis& axis(Module module) const { return axes_[module == Module::pan ? 0 : 1]; }
   Axis& axis(Module module) { return axes_[module == Module::pan ? 0 : 1]; }
