@@ -41,7 +41,7 @@ std::optional<Identification> probe_amtecpowercube(const ProbeContext& line) {
   links::Exchanger exchanger(reader, {}, "the PowerCube");
   const auto pan = ask_position(exchanger, pc::Module::pan, line.first_reply);
   // A wrist without its pan module still says who it is through its tilt.
-  const auto tilt = ask_position(exchanger, pc::Module::tilt, pan ? line.finish : line.first_reply);
+  const auto tilt = ask_position(exchanger, pc::Module::tilt, line.finish);
   if (!pan && !tilt) return std::nullopt;
   Identification found{
       .driver = "amtecpowercube",

@@ -9,11 +9,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <memory>
+#include <sstream>
 #include <string>
 
 #include "config/errors.hpp"
 #include "drivers/driver_harness_test_support.hpp"
+#include "families/amtecpowercube/driver/powercube_options.hpp"
 #include "families/amtecpowercube/emulator/powercube_emulator.hpp"
 #include "families/amtecpowercube/protocol/powercube_units.hpp"
 #include "protocol/interfaces.hpp"
@@ -180,6 +183,21 @@ TEST(PowercubeOptions, BadValuesAreRefusedAtTheirPlace) {
   EXPECT_NE(slow.find(":1:56: amtecpowercube: speed must be between 0.1 and 1000"), std::string::npos) << slow;
   const std::string port = load_error("ptz:0 ( driver \"amtecpowercube\" port \"tcp:localhost\" )\n");
   EXPECT_NE(port.find(":1:38: amtecpowercube: port"), std::string::npos) << port;
+}
+
+// The README's options table is the schema's own (between "<!-- options
+// amtecpowercube -->" and "<!-- end options -->").
+TEST(PowercubeOptions, TheReadmeTableIsTheSchemas) {
+  std::ifstream in(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/amtecpowercube/README.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string all = text.str();
+  const std::string begin = "<!-- options amtecpowercube -->\n";
+  const auto start = all.find(begin);
+  const auto end = all.find("<!-- end options -->", start);
+  ASSERT_TRUE(start != std::string::npos && end != std::string::npos);
+  EXPECT_EQ(all.substr(start + begin.size(), end - start - begin.size()),
+            amtecpowercube::powercube_option_schema().markdown());
 }
 
 struct PowercubeTiltlessTest : PowercubeDriverTest {
