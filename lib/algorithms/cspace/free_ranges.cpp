@@ -28,6 +28,9 @@ std::vector<double> free_ranges(std::span<const double> ranges, ScanGeometry geo
     const double length_squared = length * length;
     if (length_squared > 0.0) {
       for (std::size_t i = 0; i < count; i += stride) {
+        // Its own return gives length - radius, already the start; computed,
+        // rounding would take a micrometre off.
+        if (i == n) continue;
         // A return whose own range less the radius is past the reach so far
         // cannot come closer along this beam.
         if (ranges[i] - radius > reach) continue;
