@@ -49,6 +49,7 @@ GarminNmeaEmulator::GarminNmeaEmulator(GarminNmeaPlayback playback) : playing_(t
   std::erase_if(playback_.sentences, [](const std::string& line) { return line.empty() || line[0] != '$'; });
   if (playback_.sentences.empty()) throw std::invalid_argument("garminnmea emulator: the log has no NMEA sentence");
   if (!(playback_.rate > 0)) throw std::invalid_argument("garminnmea emulator: the rate must be above 0");
+  next_due_ = loop_start_ = std::max(Duration::zero(), playback_.start);
 }
 
 void GarminNmeaEmulator::receive(std::span<const std::uint8_t> bytes, Duration now, int /*host_baud*/) {

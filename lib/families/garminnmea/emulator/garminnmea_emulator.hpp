@@ -52,6 +52,9 @@ struct GarminNmeaPlayback {
   bool loop = false;
   double rate = 1.0;  // 2: twice as fast as recorded
   int baud = 4800;    // the recorded line's speed, for the bytes of one cycle
+  // Silence before the first sentence: time for the host to open the line,
+  // so that a test hears the log from its first sentence.
+  Duration start{0};
 };
 
 class GarminNmeaEmulator final : public DeviceEmulator {
