@@ -77,16 +77,20 @@ std::vector<std::uint8_t> encode(std::string_view command) {
 }
 
 ReplyLine classify(std::string_view line) {
+  // Line noise may come before a reply; nothing a camera says ends like one.
   const std::string_view text = trimmed(line);
-  if (text == "ACK") return ReplyLine::ack;
-  if (text == "NCK") return ReplyLine::nck;
+  if (text.ends_with("ACK")) return ReplyLine::ack;
+  if (text.ends_with("NCK")) return ReplyLine::nck;
   if (text.size() == 1 && text.front() == kPrompt) return ReplyLine::prompt;
   return ReplyLine::other;
 }
 
 std::optional<TPacket> parse_t_packet(std::string_view line) {
   std::string_view text = trimmed(line);
-  if (text.size() < 2 || text[0] != 'T' || text[1] != ' ') return std::nullopt;
+  // The packet starts at the last "T " (noise may come before it).
+  const std::size_t start = text.rfind("T ");
+  if (start == std::string_view::npos) return std::nullopt;
+  text.remove_prefix(start);
   const auto values = integers(text.substr(2));
   if (!values || values->size() != 8) return std::nullopt;
   for (const int value : *values) {

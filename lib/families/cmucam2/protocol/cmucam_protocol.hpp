@@ -72,6 +72,7 @@ struct TPacket {
 
 // --- replies
 enum class ReplyLine { ack, nck, prompt, other };
+// ACK and NCK are recognised behind line noise ("#%ACK"); so is a T packet.
 [[nodiscard]] ReplyLine classify(std::string_view line);
 [[nodiscard]] std::optional<TPacket> parse_t_packet(std::string_view line);
 [[nodiscard]] std::string t_packet_line(const TPacket& packet);  // without the CR

@@ -41,6 +41,8 @@ TEST(CmucamReplies, AckNckPromptAndTPackets) {
   EXPECT_EQ(classify("ACK"), ReplyLine::ack);
   EXPECT_EQ(classify("NCK"), ReplyLine::nck);
   EXPECT_EQ(classify(":"), ReplyLine::prompt);
+  EXPECT_EQ(classify("\x13#ACK"), ReplyLine::ack);  // behind line noise
+  EXPECT_EQ(*parse_t_packet("x T 1 2 3 4 5 6 7 8"), (TPacket{1, 2, 3, 4, 5, 6, 7, 8}));
   EXPECT_EQ(classify("T 1 2 3 4 5 6 7 8"), ReplyLine::other);
   const auto packet = parse_t_packet("T 45 71 30 60 58 82 42 97");
   ASSERT_TRUE(packet);
