@@ -8,10 +8,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <memory>
 #include <string>
 
 #include "config/errors.hpp"
+#include "drivers/builtin.hpp"
 #include "drivers/driver_harness_test_support.hpp"
 #include "families/flockofbirds/driver/flockofbirds_options.hpp"
 #include "families/flockofbirds/emulator/flock_emulator.hpp"
@@ -120,6 +123,35 @@ TEST(FlockOptions, BadValuesAreRefusedAtTheirPlace) {
   EXPECT_NE(bad_baud.find(":1:64: flockofbirds: baudrate must be 2400"), std::string::npos) << bad_baud;
   const std::string bad_port = load_error("position3d:0 ( driver \"flockofbirds\" port \"tcp:localhost\" )\n");
   EXPECT_NE(bad_port.find(":1:43: flockofbirds: port is not a serial port"), std::string::npos) << bad_port;
+}
+
+std::string readme_options_table() {
+  std::ifstream in(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/flockofbirds/README.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string all = text.str();
+  const std::string begin = "<!-- options flockofbirds -->\n";
+  const auto start = all.find(begin);
+  const auto end = all.find("<!-- end options -->", start);
+  if (start == std::string::npos || end == std::string::npos) return "no table";
+  return all.substr(start + begin.size(), end - start - begin.size());
+}
+
+TEST(FlockOptions, TheReadmeTableIsGeneratedFromTheSchema) {
+  EXPECT_EQ(readme_options_table(), flockofbirds::flockofbirds_option_schema().markdown());
+}
+
+TEST(FlockOptions, RegisteredAsPlayer15DidWithItsDocs) {
+  core::DriverRegistry registry;
+  register_builtin_drivers(registry);
+  const core::DriverSpec* spec = registry.find("flockofbirds");
+  ASSERT_NE(spec, nullptr);
+  EXPECT_EQ(spec->interfaces, std::vector<std::uint16_t>{protocol::kPosition3dCode});
+  EXPECT_EQ(spec->access, protocol::Access::kAll);
+  EXPECT_EQ(spec->family, "flockofbirds");
+  EXPECT_EQ(spec->doc.manual_section, "7.10");
+  EXPECT_TRUE(spec->doc.needs_hardware);
+  EXPECT_EQ(spec->doc.option_rows().size(), 2u);
 }
 
 struct FlockAt9600Test : FlockDriverTest {
