@@ -165,7 +165,7 @@ std::vector<std::string> GarminNmeaEmulator::cycle_bodies(const GarminNmeaGenera
   }
   bodies.push_back(printed("PGRME,%.1f,M,%.1f,M,%.1f,M", s.horizontal_error, s.vertical_error,
                            std::hypot(s.horizontal_error, s.vertical_error)));
-  bodies.push_back("GPGLL," + position + "," + time.substr(0, 6) + "," + status);
+  bodies.push_back("GPGLL," + position + "," + time + "," + status);
   bodies.push_back(printed("PGRMZ,%ld,f,%d", std::lround(s.altitude / 0.3048), s.fix ? 3 : 1));
   bodies.push_back("PGRMM,WGS 84");
   return bodies;
