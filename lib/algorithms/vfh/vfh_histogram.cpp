@@ -1,5 +1,7 @@
 #include "algorithms/vfh/vfh_histogram.hpp"
 
+#include "algorithms/vfh/angles.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -12,20 +14,15 @@ namespace {
 
 // 1.5 converted radians with 360/6.28, not 180/pi; its thresholds and the
 // sheet's worked cases are in that measure, so the window keeps it.
-constexpr double kDegreesPerRadian = 360.0 / 6.28;
+constexpr double kLegacyDegreesPerRadian = 360.0 / 6.28;
 // 1.5's magnitude: (3000 mm - distance)^4 / 1e8, whatever the window.
 constexpr double kMagnitudeReachMm = 3000.0;
-
-double wrap_degrees(double angle) {
-  angle = std::fmod(angle, 360.0);
-  return angle < 0 ? angle + 360.0 : angle;
-}
 
 double cell_direction(double right, double ahead) {
   if (right == 0 && ahead == 0) return -1;
   if (right == 0) return ahead > 0 ? 90 : 270;
   if (ahead == 0) return right > 0 ? 0 : 180;
-  const double slope = std::atan(std::abs(ahead) / std::abs(right)) * kDegreesPerRadian;
+  const double slope = std::atan(std::abs(ahead) / std::abs(right)) * kLegacyDegreesPerRadian;
   if (right > 0) return ahead > 0 ? slope : 360 - slope;
   return ahead > 0 ? 180 - slope : 180 + slope;
 }
@@ -108,7 +105,7 @@ HistogramWindow::HistogramWindow(const VfhParameters& parameters)
       cell.direction = cell_direction(cell.x, cell.y);
       cell.magnitude = std::pow(kMagnitudeReachMm - distance_mm, 4) / 1e8;
       if (cell.direction < 0) continue;
-      const double enlargement = std::atan(enlarge_mm / distance_mm) * kDegreesPerRadian;
+      const double enlargement = std::atan(enlarge_mm / distance_mm) * kLegacyDegreesPerRadian;
       for (int k = 0; k < sectors_; ++k) {
         const double start = k * parameters_.sector_angle;
         if (overlaps(cell.direction - enlargement, cell.direction + enlargement, start,

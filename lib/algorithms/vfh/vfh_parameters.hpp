@@ -2,6 +2,8 @@
 // The Vector Field Histogram's settings (vfh.md §3), in SI units. The
 // defaults are Player 1.5's.
 
+#include <numbers>
+
 namespace playerkit::vfh {
 
 struct VfhParameters {
@@ -11,8 +13,8 @@ struct VfhParameters {
   double robot_radius = 0.25;         // m
   double safety_distance = 0.1;       // m kept beyond the radius
   double max_speed = 0.2;             // m/s
-  double max_turn_rate = 0.6981317;   // rad/s (40 degrees/s)
-  double min_turn_rate = 0.1745329;   // rad/s (10 degrees/s): slower turns in place do not move a robot
+  double max_turn_rate = 40 * std::numbers::pi / 180;  // rad/s
+  double min_turn_rate = 10 * std::numbers::pi / 180;  // rad/s: slower turns in place do not move a robot
   double free_space_cutoff = 2.0e6;   // a sector's histogram below it is free...
   double obstacle_cutoff = 2.0e6;     // ...above it blocked; between, as it was
   double weight_desired_direction = 5.0;

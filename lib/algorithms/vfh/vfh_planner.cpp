@@ -1,5 +1,7 @@
 #include "algorithms/vfh/vfh_planner.hpp"
 
+#include "algorithms/vfh/angles.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -18,12 +20,7 @@ constexpr double kOpeningMargin = 40;     // degrees
 // 1.5 steered proportionally over 75 degrees either side of ahead.
 constexpr double kProportionalSpan = 75;  // degrees
 
-double wrap(double degrees) {
-  degrees = std::fmod(degrees, 360.0);
-  return degrees < 0 ? degrees + 360.0 : degrees;
-}
-
-double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+double radians(double degrees) { return degrees / kDegreesPerRadian; }
 
 }  // namespace
 
@@ -84,10 +81,10 @@ std::vector<double> VfhPlanner::candidates(const std::vector<bool>& free, double
       const double opening_end = before * width;  // the start of its last free sector
       const double span = opening_end - opening_start;
       if (span < kNarrowestOpening) continue;
-      found.push_back(wrap((opening_start + opening_end) / 2));
+      found.push_back(wrap_degrees((opening_start + opening_end) / 2));
       if (span < kWideOpening) continue;
-      const double right_edge = wrap(opening_start + kOpeningMargin);
-      const double left_edge = wrap(opening_end - kOpeningMargin);
+      const double right_edge = wrap_degrees(opening_start + kOpeningMargin);
+      const double left_edge = wrap_degrees(opening_end - kOpeningMargin);
       found.push_back(right_edge);
       found.push_back(left_edge);
       if (opening_start + kOpeningMargin < desired && desired < opening_end - kOpeningMargin) found.push_back(desired);
@@ -100,7 +97,7 @@ double VfhPlanner::turn_rate_towards(double direction) const {
   const double max_turn = window_.parameters().max_turn_rate;
   if (direction > 270 && direction < 360) return -max_turn;
   if (direction > 180 && direction <= 270) return max_turn;
-  const double rate = std::round((direction - 90) / kProportionalSpan * (max_turn * 180 / std::numbers::pi));
+  const double rate = std::round((direction - 90) / kProportionalSpan * (max_turn * kDegreesPerRadian));
   return std::clamp(radians(rate), -max_turn, max_turn);
 }
 
@@ -109,7 +106,7 @@ Steering VfhPlanner::step(const Scan& scan, double desired, double dt, double sp
   const RangeTable ranges(scan);
   const std::vector<bool> free = free_sectors(window_.read(ranges));
   Steering steering;
-  steering.candidates = candidates(free, wrap(desired));
+  steering.candidates = candidates(free, wrap_degrees(desired));
 
   double best_cost = 0;
   for (const double candidate : steering.candidates) {

@@ -13,7 +13,7 @@
 #include <vector>
 
 namespace playerkit::vfh {
-namespace {
+namespace vfh_planner_test {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kStep = 0.1;  // s: odometry at 10 Hz
@@ -214,5 +214,5 @@ TEST(VfhPlanner, RefusesParametersItCannotUse) {
   EXPECT_THROW(VfhPlanner{bad}, std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace vfh_planner_test
 }  // namespace playerkit::vfh

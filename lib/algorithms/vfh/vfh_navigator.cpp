@@ -1,0 +1,117 @@
+#include "algorithms/vfh/vfh_navigator.hpp"
+
+#include "algorithms/vfh/angles.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace playerkit::vfh {
+
+VfhNavigator::VfhNavigator(const NavigatorSettings& settings) : settings_(settings), planner_(settings.planner) {
+  if (!(settings.distance_epsilon > 0) || !(settings.angle_epsilon > 0)) {
+    throw std::invalid_argument("vfh: distance_epsilon and angle_epsilon must be above 0");
+  }
+  if (!(settings.backoff_speed >= 0) || !(settings.backoff_time >= 0)) {
+    throw std::invalid_argument("vfh: the stall back-off must not be negative");
+  }
+}
+
+void VfhNavigator::go_to(const geometry::Pose2& goal) {
+  if (goal_ && goal_->x == goal.x && goal_->y == goal.y && goal_->yaw == goal.yaw) return;
+  goal_ = goal;
+  mode_ = Mode::goal;
+  planner_.reset();
+  backing_off_ = 0;
+  blocked_turned_ = 0;
+}
+
+void VfhNavigator::drive(double speed, double turn_rate) {
+  mode_ = Mode::velocity;
+  commanded_speed_ = speed;
+  commanded_turn_ = turn_rate;
+}
+
+void VfhNavigator::stop() {
+  mode_ = Mode::idle;
+  backing_off_ = 0;
+}
+
+Motion VfhNavigator::step(const geometry::Pose2& pose, const Scan& scan, double dt, bool stalled) {
+  switch (mode_) {
+    case Mode::idle:
+      return {};
+    case Mode::velocity: {
+      // Forward only as fast as the room ahead allows; the laser sees
+      // nothing behind, so reversing is the client's own responsibility.
+      double speed = commanded_speed_;
+      if (speed > 0) {
+        const VfhParameters& p = settings_.planner;
+        const double free_ahead = RangeTable(scan).nearest_around(90, 15) - p.robot_radius - p.safety_distance;
+        speed *= std::clamp((free_ahead - p.stop_distance) / p.slow_down_distance, 0.0, 1.0);
+      }
+      return {.speed = speed, .turn_rate = commanded_turn_};
+    }
+    case Mode::goal:
+      return towards_goal(pose, scan, dt, stalled);
+  }
+  return {};
+}
+
+Motion VfhNavigator::turn_in_place(double heading_error) const {
+  // As 1.5: proportional over 180 degrees, whole degrees a second, at least
+  // the minimum turn rate (slower does not move a real base).
+  const VfhParameters& p = settings_.planner;
+  if (std::abs(heading_error) <= settings_.angle_epsilon) return {};
+  const double max_degrees = p.max_turn_rate * kDegreesPerRadian;
+  double rate = std::round(heading_error * kDegreesPerRadian / 180.0 * max_degrees) / kDegreesPerRadian;
+  if (std::abs(rate) < p.min_turn_rate) rate = std::copysign(p.min_turn_rate, heading_error);
+  return {.speed = 0, .turn_rate = rate};
+}
+
+Motion VfhNavigator::towards_goal(const geometry::Pose2& pose, const Scan& scan, double dt, bool stalled) {
+  const VfhParameters& p = settings_.planner;
+  if (backing_off_ > 0) {
+    backing_off_ -= dt;
+    if (backing_off_ <= 0) planner_.reset();
+    return {.speed = -settings_.backoff_speed, .turn_rate = 0};
+  }
+  if (stalled && planner_.speed() > 0) {
+    // Pushing against something the laser missed (too low, too dark):
+    // back off a little and look again.
+    ++stalls_;
+    backing_off_ = settings_.backoff_time;
+    return {.speed = -settings_.backoff_speed, .turn_rate = 0};
+  }
+  const double dx = goal_->x - pose.x;
+  const double dy = goal_->y - pose.y;
+  const double distance = std::hypot(dx, dy);
+  const double heading_error = geometry::angle_difference(goal_->yaw, pose.yaw);
+  if (distance < settings_.distance_epsilon) {
+    if (std::abs(heading_error) < settings_.angle_epsilon) {
+      mode_ = Mode::idle;
+      return {.reached = true};
+    }
+    return turn_in_place(heading_error);
+  }
+  const double desired = wrap_degrees(90.0 + (std::atan2(dy, dx) - pose.yaw) * kDegreesPerRadian);
+  // Arrive without circling: no faster than stops in the distance left, and
+  // than turns on a circle of half of it (1.5 circled goals it never slowed for).
+  const double limit = std::min(std::sqrt(2.0 * p.acceleration * distance), p.max_turn_rate * distance / 2.0);
+  const Steering steering = planner_.step(scan, desired, dt, limit);
+  if (steering.blocked) {
+    blocked_turned_ += std::abs(steering.turn_rate) * dt;
+    if (blocked_turned_ >= 2.0 * std::numbers::pi) {
+      ++stuck_events_;
+      mode_ = Mode::idle;
+      blocked_turned_ = 0;
+      return {.stuck = true};
+    }
+  } else {
+    blocked_turned_ = 0;
+  }
+  return {.speed = steering.speed, .turn_rate = steering.turn_rate};
+}
+
+}  // namespace playerkit::vfh

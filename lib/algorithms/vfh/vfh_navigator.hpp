@@ -1,0 +1,72 @@
+#pragma once
+// What the vfh driver does with its client's commands (vfh.md §1, §2.1), as
+// pure logic: a goal in the odometric frame (position mode) reached through
+// the VfhPlanner; speeds passed through with the forward speed capped by the
+// room ahead (velocity mode; 1.5 passed them only while a goal was active,
+// and blindly); a stall escape; and "stuck", said once, when no way opens
+// for a whole turn in place, so that a global planner can plan again.
+
+#include <cstdint>
+#include <numbers>
+#include <optional>
+
+#include "algorithms/geometry/pose2.hpp"
+#include "algorithms/vfh/vfh_planner.hpp"
+
+namespace playerkit::vfh {
+
+struct NavigatorSettings {
+  VfhParameters planner;
+  double distance_epsilon = 0.5;     // m: near enough to the goal
+  double angle_epsilon = 10 * std::numbers::pi / 180;  // rad: facing it closely enough
+  double backoff_speed = 0.1;        // m/s, backwards, after a stall
+  double backoff_time = 1.0;         // s
+};
+
+struct Motion {
+  double speed = 0;      // m/s
+  double turn_rate = 0;  // rad/s
+  bool reached = false;  // the goal was reached in this step
+  bool stuck = false;    // the goal was given up in this step: no way for a whole turn
+};
+
+class VfhNavigator {
+ public:
+  // Throws std::invalid_argument for bad settings.
+  explicit VfhNavigator(const NavigatorSettings& settings);
+
+  // Position mode. The same goal again is not a new goal (as in 1.5): a
+  // client re-sending its command every cycle does not restart anything.
+  void go_to(const geometry::Pose2& goal);
+  // Velocity mode: forward speed, turn rate.
+  void drive(double speed, double turn_rate);
+  // Motors off: nothing moves until the next command.
+  void stop();
+
+  // One cycle, on new odometry: `pose` in the odometric frame, the latest
+  // scan, the seconds since the last cycle, whether the base says it stalled.
+  Motion step(const geometry::Pose2& pose, const Scan& scan, double dt, bool stalled);
+
+  [[nodiscard]] bool goal_active() const { return mode_ == Mode::goal; }
+  [[nodiscard]] std::optional<geometry::Pose2> goal() const { return goal_; }
+  [[nodiscard]] std::uint64_t stuck_events() const { return stuck_events_; }
+  [[nodiscard]] std::uint64_t stalls() const { return stalls_; }
+
+ private:
+  enum class Mode { idle, goal, velocity };
+  Motion towards_goal(const geometry::Pose2& pose, const Scan& scan, double dt, bool stalled);
+  Motion turn_in_place(double heading_error) const;
+
+  NavigatorSettings settings_;
+  VfhPlanner planner_;
+  Mode mode_ = Mode::idle;
+  std::optional<geometry::Pose2> goal_;  // the last goal given, reached or not
+  double commanded_speed_ = 0;
+  double commanded_turn_ = 0;
+  double backing_off_ = 0;    // s of backing off left
+  double blocked_turned_ = 0; // rad turned in place while blocked
+  std::uint64_t stuck_events_ = 0;
+  std::uint64_t stalls_ = 0;
+};
+
+}  // namespace playerkit::vfh

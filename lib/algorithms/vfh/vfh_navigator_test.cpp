@@ -1,0 +1,147 @@
+// The vfh driver's behaviour without the driver: goals, turning in place
+// (the sheet's cases), arriving, velocity mode against a wall, stalls and
+// giving up when boxed in.
+
+#include "algorithms/vfh/vfh_navigator.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <vector>
+
+namespace playerkit::vfh {
+namespace vfh_navigator_test {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kStep = 0.1;
+
+double radians(double degrees) { return degrees * kPi / 180.0; }
+
+// A base on a plane, its 181-reading laser given by `ray`.
+struct Robot {
+  geometry::Pose2 pose;
+  std::function<double(const geometry::Pose2& from, double angle)> ray = [](const geometry::Pose2&, double) {
+    return 8.0;
+  };
+  std::vector<double> ranges;
+
+  Scan scan() {
+    ranges.resize(181);
+    for (int i = 0; i < 181; ++i) ranges[static_cast<std::size_t>(i)] = std::min(ray(pose, pose.yaw + radians(i - 90)), 8.0);
+    return {-kPi / 2, kPi / 180, ranges};
+  }
+  void move(const Motion& m) {
+    pose.yaw = geometry::normalize_angle(pose.yaw + m.turn_rate * kStep);
+    pose.x += m.speed * kStep * std::cos(pose.yaw);
+    pose.y += m.speed * kStep * std::sin(pose.yaw);
+  }
+};
+
+TEST(VfhNavigator, TurnsInPlaceTowardsTheGoalsHeadingAsTheSheetSays) {
+  Robot robot;
+  VfhNavigator navigator{NavigatorSettings{}};
+  navigator.go_to({0, 0, radians(90)});
+  Motion m = navigator.step(robot.pose, robot.scan(), kStep, false);
+  EXPECT_EQ(m.speed, 0.0);
+  EXPECT_NEAR(m.turn_rate, radians(20), 1e-9);
+  navigator.go_to({0, 0, radians(15)});
+  m = navigator.step(robot.pose, robot.scan(), kStep, false);
+  EXPECT_NEAR(m.turn_rate, radians(10), 1e-9);  // the minimum turn rate
+}
+
+TEST(VfhNavigator, AGoalAlreadyThereIsReachedOnceAndNotAgain) {
+  Robot robot;
+  VfhNavigator navigator{NavigatorSettings{}};
+  navigator.go_to({0.3, 0.2, radians(5)});
+  const Motion m = navigator.step(robot.pose, robot.scan(), kStep, false);
+  EXPECT_TRUE(m.reached);
+  EXPECT_FALSE(navigator.goal_active());
+  navigator.go_to({0.3, 0.2, radians(5)});  // the same goal again: not a new one
+  EXPECT_FALSE(navigator.goal_active());
+  EXPECT_FALSE(navigator.step(robot.pose, robot.scan(), kStep, false).reached);
+}
+
+TEST(VfhNavigator, DrivesToAGoalInTheOpenAndStopsThere) {
+  Robot robot;
+  VfhNavigator navigator{NavigatorSettings{}};
+  navigator.go_to({3.0, -2.0, radians(-90)});
+  bool reached = false;
+  for (int step = 0; step < 900 && !reached; ++step) {
+    const Motion m = navigator.step(robot.pose, robot.scan(), kStep, false);
+    reached = m.reached;
+    robot.move(m);
+  }
+  ASSERT_TRUE(reached) << robot.pose.x << ", " << robot.pose.y;
+  EXPECT_LT(std::hypot(robot.pose.x - 3.0, robot.pose.y + 2.0), 0.5);
+  EXPECT_LT(std::abs(geometry::angle_difference(robot.pose.yaw, radians(-90))), radians(10));
+  const Motion after = navigator.step(robot.pose, robot.scan(), kStep, false);
+  EXPECT_EQ(after.speed, 0.0);
+  EXPECT_EQ(after.turn_rate, 0.0);
+}
+
+TEST(VfhNavigator, VelocityModeNeverDrivesIntoAWall) {
+  Robot robot;
+  robot.ray = [](const geometry::Pose2& from, double angle) {
+    return std::cos(angle) > 1e-9 ? (2.0 - from.x) / std::cos(angle) : 8.0;
+  };
+  const NavigatorSettings settings;
+  VfhNavigator navigator{settings};
+  navigator.drive(0.5, 0.0);  // straight at the wall, faster than max_speed even
+  double last_speed = 1.0;
+  bool slowed = false;
+  for (int step = 0; step < 300; ++step) {
+    const Motion m = navigator.step(robot.pose, robot.scan(), kStep, false);
+    slowed = slowed || m.speed < last_speed;
+    last_speed = m.speed;
+    robot.move(m);
+  }
+  EXPECT_TRUE(slowed);
+  EXPECT_GE(2.0 - robot.pose.x, settings.planner.robot_radius + settings.planner.safety_distance);
+  EXPECT_LT(last_speed, 0.01);
+  navigator.drive(-0.1, 0.2);  // backing away is the client's call
+  const Motion back = navigator.step(robot.pose, robot.scan(), kStep, false);
+  EXPECT_EQ(back.speed, -0.1);
+  EXPECT_EQ(back.turn_rate, 0.2);
+}
+
+TEST(VfhNavigator, BacksOffAfterAStallAndGoesOn) {
+  Robot robot;
+  NavigatorSettings settings;
+  VfhNavigator navigator{settings};
+  navigator.go_to({5, 0, 0});
+  for (int i = 0; i < 5; ++i) robot.move(navigator.step(robot.pose, robot.scan(), kStep, false));
+  const Motion stalled = navigator.step(robot.pose, robot.scan(), kStep, true);
+  EXPECT_EQ(stalled.speed, -settings.backoff_speed);
+  EXPECT_EQ(navigator.stalls(), 1u);
+  int backing = 1;
+  while (navigator.step(robot.pose, robot.scan(), kStep, false).speed < 0 && backing < 50) ++backing;
+  EXPECT_NEAR(backing * kStep, settings.backoff_time + kStep, 2 * kStep);
+  EXPECT_TRUE(navigator.goal_active());
+  EXPECT_GT(navigator.step(robot.pose, robot.scan(), kStep, false).speed, 0.0);
+}
+
+TEST(VfhNavigator, BoxedInItTurnsOnceRoundThenSaysItIsStuck) {
+  Robot robot;
+  robot.ray = [](const geometry::Pose2&, double) { return 0.5; };
+  VfhNavigator navigator{NavigatorSettings{}};
+  navigator.go_to({5, 0, 0});
+  int steps = 0;
+  Motion m;
+  while (!m.stuck && steps < 300) {
+    m = navigator.step(robot.pose, robot.scan(), kStep, false);
+    EXPECT_EQ(m.speed, 0.0);
+    robot.move(m);
+    ++steps;
+  }
+  ASSERT_TRUE(m.stuck);
+  // A whole turn at 40 degrees a second: 9 seconds.
+  EXPECT_NEAR(steps * kStep, 9.0, 0.3);
+  EXPECT_EQ(navigator.stuck_events(), 1u);
+  EXPECT_FALSE(navigator.goal_active());
+}
+
+}  // namespace vfh_navigator_test
+}  // namespace playerkit::vfh
