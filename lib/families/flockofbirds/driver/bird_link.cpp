@@ -38,16 +38,17 @@ fob::PositionScaling BirdLink::start() {
   send(fob::command(fob::CommandByte::position_angles));
   std::optional<fob::PositionScaling> scaling;
   std::vector<std::uint8_t> odd_answer;
-  auto outcome = value_exchanger_.try_exchange({.name = "EXAMINE VALUE position scaling (O 3)",
-                             .bytes = fob::examine_position_scaling(),
-                             .matcher =
-                                 [&](std::span<const std::uint8_t> reply) {
-                                   scaling = fob::scaling_from_reply(reply);
-                                   if (!scaling) odd_answer.assign(reply.begin(), reply.end());
-                                   return scaling ? links::ReplyMatch::mine : links::ReplyMatch::not_mine;
-                                 },
-                             .timeout = kReplyTimeout,
-                             .attempts = kAttempts});
+  auto outcome = value_exchanger_.try_exchange(
+      {.name = "EXAMINE VALUE position scaling (O 3)",
+       .bytes = fob::examine_position_scaling(),
+       .matcher =
+           [&](std::span<const std::uint8_t> reply) {
+             scaling = fob::scaling_from_reply(reply);
+             if (!scaling) odd_answer.assign(reply.begin(), reply.end());
+             return scaling ? links::ReplyMatch::mine : links::ReplyMatch::not_mine;
+           },
+       .timeout = kReplyTimeout,
+       .attempts = kAttempts});
   if (!outcome.replied() && !odd_answer.empty() && outcome.failure == links::ExchangeFailure::no_reply) {
     char bytes[8];
     std::snprintf(bytes, sizeof bytes, "%02X %02X", odd_answer[0], odd_answer[1]);

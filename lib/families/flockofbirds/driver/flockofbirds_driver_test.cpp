@@ -226,6 +226,32 @@ TEST_F(FlockDriverTest, RefusesTheSubscriptionWhenNothingAnswers) {
   EXPECT_FALSE(tracker().subscribe());
 }
 
+// A bird whose EXAMINE VALUE 3 answer is neither 36" nor 72".
+class OddScalingBird final : public emulators::DeviceEmulator {
+ public:
+  void receive(std::span<const std::uint8_t> bytes, emulators::Duration, int) override {
+    for (const std::uint8_t byte : bytes) {
+      if (byte == 0x42) out_.push_back({{0x80, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, false});
+      if (byte == 0x03) out_.push_back({{0x02, 0x00}, false});
+    }
+  }
+  void advance(emulators::Duration) override {}
+  [[nodiscard]] emulators::Duration next_deadline() const override { return emulators::Duration::max(); }
+  std::vector<emulators::Telegram> take_output() override { return std::exchange(out_, {}); }
+  [[nodiscard]] std::string describe() const override { return "a bird with an odd scaling"; }
+
+ private:
+  std::vector<emulators::Telegram> out_;
+};
+
+TEST(FlockOddScaling, AScalingNeither36Nor72InchesRefusesTheSubscriptionNamingIt) {
+  EmulatedLine<OddScalingBird> bird([] { return std::make_unique<OddScalingBird>(); });
+  ConfiguredDevices devices;
+  devices.load("position3d:0 ( driver \"flockofbirds\" port \"$PORT\" )\n", bird.port());
+  EXPECT_FALSE(devices.device(protocol::kPosition3dCode).subscribe());
+  EXPECT_FALSE(devices.log.first_with({"position scaling with 02 00"}).empty()) << devices.log.all();
+}
+
 struct FlockReplugTest : FlockDriverTest {
   static LineOptions on_a_symlink() {
     static ::playerkit::testing::ScratchDirectory scratch("flockofbirds-replug");
