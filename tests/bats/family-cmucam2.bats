@@ -37,9 +37,11 @@ teardown() {
   start_emulator "$BATS_TEST_TMPDIR/emulate.out" "$BATS_TEST_TMPDIR/emulate.err" cmucam2 --link "$cam"
   run --separate-stderr timeout 60 "$player_drivers" run cmucam2 "port=$cam" "color0=[200 240 16 60 16 60]" -n 2 --trace
   [ "$status" -eq 0 ]
-  grep -q 'PM 1' <<<"$stderr"
-  grep -q 'TC 200 240 16 60 16 60' <<<"$stderr"
-  grep -Eq 'T [0-9]+ [0-9]+ [0-9]+ [0-9]+ [0-9]+ [0-9]+ [0-9]+ [0-9]+' <<<"$stderr"
+  [[ "$stderr" == *"> 50 4D 20 31 0D"* ]]                                     # PM 1
+  [[ "$stderr" == *"> 54 43 20 32 30 30 20 32 34 30 20 31 36 20 36 30 20 31 36 20 36 30 0D"* ]]  # TC 200 240 16 60 16 60
+  [[ "$stderr" == *"< 54 20 32 36 20 37 32 "* ]]                              # T 26 72 ...
+  [[ "$stderr" == *"> 0D"$'\n'* ]]                                            # the lone CR, a command of its own
+  [[ "$stderr" != *"not a telegram"* ]]
   stop_cleanly "$emulator_pid"
 }
 
@@ -81,5 +83,25 @@ teardown() {
   [ "$status" -eq 0 ]
   [ "$(jq -r '.data.pan' <<<"$output")" -eq 0 ]
   stop_cleanly "$server_pid"
+  stop_cleanly "$emulator_pid"
+}
+
+@test "a CMUcam2's servos: run cmucam2_ptz, a request, and info lists the options" {
+  cam="$BATS_TEST_TMPDIR/cam"
+  start_emulator "$BATS_TEST_TMPDIR/emulate.out" "$BATS_TEST_TMPDIR/emulate.err" cmucam2 --link "$cam"
+  run --separate-stderr timeout 60 "$player_drivers" run cmucam2_ptz "port=$cam" -n 1 --format json
+  [ "$status" -eq 0 ]
+  [ "$(jq -r '.device' <<<"$output")" = ptz ]
+  [ "$(jq -r '"\(.data.pan) \(.data.tilt) \(.data.zoom)"' <<<"$output")" = "0 0 48" ]
+
+  run --separate-stderr timeout 60 "$player_drivers" run cmucam2_ptz "port=$cam" --req control-mode mode=1
+  [ "$status" -eq 0 ]
+  [ "$(jq -r '.type' <<<"$output")" = ack ]
+
+  run --separate-stderr "$player_drivers" info cmucam2
+  [ "$status" -eq 0 ]
+  [[ "$output" == *"devicepath"* ]]
+  [[ "$output" == *"color9"* ]]
+  [[ "$output" == *"num_blobs"* ]]
   stop_cleanly "$emulator_pid"
 }

@@ -8,8 +8,10 @@
 namespace playerkit::families {
 
 FamilySpec cmucam2_family() {
-  // Both directions are CR-ended lines; the camera's prompt is a telegram of its own.
-  const auto lines = std::make_shared<framing::TerminatedLineFormat>(hardware::cmucam2::reply_line_options());
+  // Both directions are CR-ended lines (a lone CR is a command); the
+  // camera's prompt is a telegram of its own.
+  const auto commands = std::make_shared<framing::TerminatedLineFormat>(hardware::cmucam2::command_line_options());
+  const auto replies = std::make_shared<framing::TerminatedLineFormat>(hardware::cmucam2::reply_line_options());
   return {
       .name = "cmucam2",
       .summary = "CMUcam2 colour tracker and its servos (ASCII, 115200 baud)",
@@ -18,7 +20,7 @@ FamilySpec cmucam2_family() {
                   .bauds = {115200, 38400, 19200, 9600},
                   .line = {},
                   .ask = probe_cmucam2}},
-      .framing = {lines, lines},
+      .framing = {commands, replies},
       .emulators = {cmucam2_emulator_kind()},
       .drivers = {},  // built in through CMake (playerkit_driver_family)
       .examples =

@@ -76,6 +76,10 @@ TEST(Cmucam2Family, TraceFramingCutsLinesAndThePrompt) {
   const auto prompt = framing.incoming->scan(bytes.subspan(replies.size() - 1));
   EXPECT_EQ(prompt.kind, framing::FrameScan::Kind::frame);
   EXPECT_EQ(prompt.length, 1u);
+  // The lone CR that returns the camera to idle is a command of its own.
+  ASSERT_NE(framing.outgoing, nullptr);
+  const std::uint8_t cr = '\r';
+  EXPECT_EQ(framing.outgoing->scan(std::span(&cr, 1)).kind, framing::FrameScan::Kind::frame);
 }
 
 }  // namespace cmucam2_family_test

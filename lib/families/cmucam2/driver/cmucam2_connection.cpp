@@ -151,6 +151,7 @@ void Cmucam2Connection::take_commands() {
     const std::array<double, 2> speeds{static_cast<double>(ptz.panspeed), static_cast<double>(ptz.tiltspeed)};
     for (std::size_t i = 0; i < axes_.size(); ++i) {
       Axis& axis = axes_[i];
+      axis.commanded = true;
       if (velocity_control_) {
         // Toward the end of travel in the speed's direction; 0 holds.
         axis.speed = std::fabs(speeds[i]);
@@ -176,7 +177,7 @@ void Cmucam2Connection::move_servos(Clock::time_point now) {
       axis.set_point = std::fabs(to_go) <= step ? axis.target : axis.set_point + std::copysign(step, to_go);
     }
     const int position = static_cast<int>(std::lround(axis.set_point));
-    if (axis.sent == position) continue;
+    if (!axis.commanded || axis.sent == position) continue;
     try {
       camera_->command(cam::set_servo(static_cast<int>(i), position));
     } catch (const links::ExchangeError& e) {

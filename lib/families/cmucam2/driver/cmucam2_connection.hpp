@@ -64,6 +64,7 @@ class Cmucam2Connection final : public hardware_driver::RobotConnection, private
     double speed = 0;                   // degrees/s; 0: straight there
     double set_point = kCentre;         // where the driver has it, stepping at `speed`
     std::optional<int> sent;            // the last SV this session
+    bool commanded = false;             // a client has moved it: until then the servo is left alone
   };
 
   void connect(links::ByteLink& link) override;

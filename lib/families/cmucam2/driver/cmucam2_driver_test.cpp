@@ -53,6 +53,9 @@ TEST_F(Cmucam2DriverTest, ReportsTheBlobsOfTheConfiguredColours) {
   load("blobfinder:0 ( driver \"cmucam2\" devicepath \"$PORT\" " + kTwoColours + ")\n");
   ASSERT_TRUE(blobfinder().subscribe()) << devices.log.all();
   EXPECT_TRUE(camera.with([](Cmucam2Emulator& e) { return e.poll_mode(); }));
+  // Without a ptz device the servos are left where they are (1.5 never moved them).
+  EXPECT_TRUE(more_data(blobfinder(), 2));
+  EXPECT_EQ(camera.with([](Cmucam2Emulator& e) { return e.servo_target(0); }), Cmucam2Emulator::kServoCentre);
   const auto data = data_when<protocol::BlobfinderData>(blobfinder(), [](const auto& d) { return d.blobs.size() == 2; });
   ASSERT_TRUE(data) << devices.log.all();
   ASSERT_EQ(data->blobs.size(), 2u) << devices.log.all();

@@ -43,6 +43,14 @@ framing::LineOptions reply_line_options() {
           .name = "cmucam2"};
 }
 
+framing::LineOptions command_line_options() {
+  return {.end = framing::LineEnd::cr,
+          .max_length = kLongestLine,
+          .prompt = std::nullopt,
+          .skip_empty_lines = false,
+          .name = "cmucam2 commands"};
+}
+
 bool ColorBounds::valid() const {
   const std::array<std::array<int, 2>, 3> ranges{{{red_min, red_max}, {green_min, green_max}, {blue_min, blue_max}}};
   for (const auto& [low, high] : ranges) {

@@ -26,6 +26,8 @@ inline constexpr std::uint8_t kPrompt = ':';
 
 // Replies are CR-ended lines, the prompt a telegram of its own.
 [[nodiscard]] framing::LineOptions reply_line_options();
+// Commands, for traces: CR-ended lines, the lone CR one of them.
+[[nodiscard]] framing::LineOptions command_line_options();
 
 // The colour bounds of one TC, in the camera's order: R, G, B (the manual's
 // R, B, G order is wrong, cmucam2.md §4).
