@@ -1,12 +1,20 @@
 #!/usr/bin/env bats
-# lasercspace (manual 7.22) served by player-serve on a laser replayed from a
-# real robot's log: every beam comes out shortened by at least the radius,
-# with the source scan's timestamp and geometry.
+# The navigation drivers through player-serve: lasercspace (manual 7.22) on
+# a laser replayed from a real robot's log, vfh (manual 7.45) driving a
+# simulated Pioneer to a goal sent from the shell.
 
 load helpers
 
 teardown() {
-  kill_left_running "${server_pid:-}"
+  kill_left_running "${server_pid:-}" "${cat_pid:-}"
+}
+
+# near_goal FILE X Y: the last vfh sample in FILE (player-cat JSON) is
+# stopped within 0.5 m of (X, Y) mm.
+near_goal() {
+  tail -n 1 "$1" | jq -e --argjson x "$2" --argjson y "$3" \
+    '.data.xspeed == 0 and ((.data.xpos - $x) * (.data.xpos - $x) + (.data.ypos - $y) * (.data.ypos - $y)) < 250000' \
+    >/dev/null 2>&1
 }
 
 @test "lasercspace shortens a replayed laser's beams by at least the robot's radius" {
@@ -43,4 +51,21 @@ CFG
   run "$player_serve" --check "$BATS_TEST_TMPDIR/self.cfg"
   [ "$status" -ne 0 ]
   [[ "$output" == *"laser 0 is this device itself"* ]]
+}
+
+@test "vfh drives a simulated Pioneer to a goal sent from the shell" {
+  cat >"$BATS_TEST_TMPDIR/vfh.cfg" <<'CFG'
+position:1 ( driver "vfh" position_index 0 laser_index 0 max_speed 0.3 )
+CFG
+  start_server "$BATS_TEST_TMPDIR/serve.err" -s "$repo_root/data/worlds/simple.world" -p 0 --speedup 5 \
+    "$BATS_TEST_TMPDIR/vfh.cfg"
+  # A reader keeps vfh set up; the goal is in the odometric frame (the robot starts at its origin).
+  "$player_cat" "localhost:$server_port" position:1 --format json >"$BATS_TEST_TMPDIR/vfh.jsonl" 2>"$BATS_TEST_TMPDIR/cat.err" &
+  cat_pid=$!
+  wait_for_nonempty --pid "$cat_pid" --log "$BATS_TEST_TMPDIR/cat.err" "$BATS_TEST_TMPDIR/vfh.jsonl"
+  "$player_send" "localhost:$server_port" position:1 cmd xpos=2000 ypos=500 yaw=0 type=1 state=1
+  wait_until --pid "$cat_pid" --timeout 120 --log "$BATS_TEST_TMPDIR/serve.err" "vfh to stop at (2, 0.5)" \
+    near_goal "$BATS_TEST_TMPDIR/vfh.jsonl" 2000 500
+  kill -TERM "$cat_pid"
+  stop_cleanly "$server_pid"
 }
