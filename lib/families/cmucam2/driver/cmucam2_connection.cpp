@@ -219,7 +219,7 @@ void Cmucam2Connection::publish_servos() {
   std::array<std::int16_t*, 2> speeds{&data.panspeed, &data.tiltspeed};
   for (std::size_t i = 0; i < axes_.size(); ++i) {
     const std::string line = camera_->query(cam::get_servo(static_cast<int>(i)),
-                                             [](std::string_view data) { return cam::parse_number(data).has_value(); });
+                                             [](std::string_view text) { return cam::parse_number(text).has_value(); });
     const std::optional<int> position = cam::parse_number(line);
     if (!position) throw hardware_driver::RobotLost("the camera answered GS with '" + line + "'");
     *angles[i] = wire_degrees(degrees_of(*position));

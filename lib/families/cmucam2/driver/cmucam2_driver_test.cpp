@@ -98,7 +98,7 @@ TEST_F(Cmucam2DriverTest, BothDevicesShareOneLineAndTheServosTurnTheView) {
   // Speed 0: the servo's own speed, straight to 10 degrees (128 + 13 positions of 0.75).
   write_command(ptz(), protocol::PtzCommand{.pan = 10, .tilt = 0, .zoom = 0, .panspeed = 0, .tiltspeed = 0});
   ASSERT_TRUE(camera.wait_until([](Cmucam2Emulator& e) { return e.servo_target(0) == 141; })) << devices.log.all();
-  const auto reached = data_when<protocol::PtzData>(ptz(), [](const auto& d) { return d.pan == 10; });
+  const auto reached = data_when<protocol::PtzData>(ptz(), [](const protocol::PtzData& d) { return d.pan == 10; });
   ASSERT_TRUE(reached);
   EXPECT_EQ(reached->pan, 10);  // 9.75 rounds to 10: within the servo's 0.75 degrees
   EXPECT_EQ(reached->zoom, 48);
@@ -114,10 +114,10 @@ TEST_F(Cmucam2DriverTest, APtzSectionOfItsOwnDriverAndAGivenSpeed) {
   ASSERT_TRUE(ptz().subscribe()) << devices.log.all();
   // 20 degrees at 50 deg/s: stepped there in about 0.4 s.
   write_command(ptz(), protocol::PtzCommand{.pan = -20, .tilt = 15, .zoom = 0, .panspeed = 50, .tiltspeed = 0});
-  const auto moving = data_when<protocol::PtzData>(ptz(), [](const auto& d) { return d.pan < 0 && d.pan > -20; });
+  const auto moving = data_when<protocol::PtzData>(ptz(), [](const protocol::PtzData& d) { return d.pan < 0 && d.pan > -20; });
   ASSERT_TRUE(moving) << devices.log.all();
   EXPECT_EQ(moving->panspeed, 50);
-  const auto there = data_when<protocol::PtzData>(ptz(), [](const auto& d) { return d.pan == -20 && d.tilt == 15; });
+  const auto there = data_when<protocol::PtzData>(ptz(), [](const protocol::PtzData& d) { return d.pan == -20 && d.tilt == 15; });
   ASSERT_TRUE(there);
   EXPECT_EQ(there->panspeed, 0);
   EXPECT_EQ(camera.with([](Cmucam2Emulator& e) { return e.servo_target(0); }), 88);
@@ -126,7 +126,7 @@ TEST_F(Cmucam2DriverTest, APtzSectionOfItsOwnDriverAndAGivenSpeed) {
   EXPECT_TRUE(acked(ask(ptz(), protocol::PtzVelocityModeConfig{.subtype = protocol::kPtzControlModeReq,
                                                                .mode = protocol::kPtzVelocityControl})));
   write_command(ptz(), protocol::PtzCommand{.pan = 0, .tilt = 0, .zoom = 0, .panspeed = 40, .tiltspeed = 0});
-  EXPECT_TRUE(data_when<protocol::PtzData>(ptz(), [](const auto& d) { return d.pan > -10; }).value_or(protocol::PtzData{}).pan > -10);
+  EXPECT_TRUE(data_when<protocol::PtzData>(ptz(), [](const protocol::PtzData& d) { return d.pan > -10; }).value_or(protocol::PtzData{}).pan > -10);
   EXPECT_TRUE(nacked(ask(ptz(), protocol::PtzVelocityModeConfig{.subtype = protocol::kPtzControlModeReq, .mode = 7})));
   EXPECT_TRUE(nacked(ask(ptz(), std::vector<std::uint8_t>{9, 0})));
 }
@@ -178,7 +178,7 @@ TEST_P(Cmucam2FaultTest, ABadLineLosesNothingButTime) {
   ASSERT_TRUE(blobfinder().subscribe()) << devices.log.all();
   ASSERT_TRUE(ptz().subscribe()) << devices.log.all();
   write_command(ptz(), protocol::PtzCommand{.pan = 10, .tilt = 0, .zoom = 0, .panspeed = 0, .tiltspeed = 0});
-  EXPECT_TRUE(data_when<protocol::PtzData>(ptz(), [](const auto& d) { return d.pan == 10; }, 10s));
+  EXPECT_TRUE(data_when<protocol::PtzData>(ptz(), [](const protocol::PtzData& d) { return d.pan == 10; }, 10s));
   const auto centred = data_when<protocol::BlobfinderData>(
       blobfinder(), [](const auto& d) { return d.blobs.size() == 2 && d.blobs[0].x >= 43 && d.blobs[0].x <= 45; }, 10s);
   ASSERT_TRUE(centred) << devices.log.all();
