@@ -148,6 +148,71 @@ TEST_F(Sonyevid30DriverTest, AFullCommandBufferIsClearedByCancellingOneSocket) {
   EXPECT_EQ(counter(ptz().driver(), "cancelled_commands"), 1u);
 }
 
+// A camera that errs where the emulator never does (sheet §6.6): every
+// command refused instead of ACKed, or every completion replaced by "not
+// executable" after its ACK.
+class ErringCamera final : public emulators::DeviceEmulator {
+ public:
+  enum class Fault { refuse_commands, fail_after_ack };
+  explicit ErringCamera(Fault fault) : fault_(fault) {}
+  void receive(std::span<const std::uint8_t> bytes, emulators::Duration now, int baud) override {
+    camera_.receive(bytes, now, baud);
+  }
+  void advance(emulators::Duration now) override { camera_.advance(now); }
+  [[nodiscard]] emulators::Duration next_deadline() const override { return camera_.next_deadline(); }
+  [[nodiscard]] std::string describe() const override { return "an erring " + camera_.describe(); }
+  std::vector<emulators::Telegram> take_output() override {
+    std::vector<emulators::Telegram> out;
+    for (emulators::Telegram& telegram : camera_.take_output()) {
+      const visca::Reply reply = visca::parse_reply(telegram.bytes);
+      if (fault_ == Fault::refuse_commands && reply.kind == visca::Reply::Kind::completion) continue;
+      if ((fault_ == Fault::refuse_commands && reply.kind == visca::Reply::Kind::ack) ||
+          (fault_ == Fault::fail_after_ack && reply.kind == visca::Reply::Kind::completion)) {
+        telegram.bytes = visca::error_reply(reply.socket, visca::kNotExecutable);
+      }
+      out.push_back(std::move(telegram));
+    }
+    return out;
+  }
+
+ private:
+  Fault fault_;
+  Evid30Emulator camera_;
+};
+
+struct Sonyevid30ErrorTest : ::testing::TestWithParam<ErringCamera::Fault> {
+  Sonyevid30ErrorTest() : camera([] { return std::make_unique<ErringCamera>(GetParam()); }) {}
+  core::Device& ptz() { return devices.device(protocol::kPtzCode); }
+  EmulatedLine<ErringCamera> camera;
+  ConfiguredDevices devices;
+};
+
+// Errors are reported in one clear line each, and the driver goes on (1.5 printed and waited forever).
+TEST_P(Sonyevid30ErrorTest, ErrorPacketsAreReportedAndTheDriverGoesOn) {
+  devices.load("ptz:0 ( driver \"sonyevid30\" port \"$PORT\" )\n", camera.port());
+  ASSERT_TRUE(ptz().subscribe()) << devices.log.all();
+  write_command(ptz(), protocol::PtzCommand{.pan = 5, .tilt = 0, .zoom = 30, .panspeed = 0, .tiltspeed = 0});
+  if (GetParam() == ErringCamera::Fault::refuse_commands) {
+    EXPECT_FALSE(devices.log.first_with({"refused absolute pan/tilt (81 01 06 02 18 14 0F 0F 0D 04 00 00 00 00 FF)",
+                                         "command not executable"}).empty())
+        << devices.log.all();
+    EXPECT_FALSE(devices.log.first_with({"refused zoom direct (81 01 04 47 00 00 00 00 FF)"}).empty());
+    EXPECT_EQ(counter(ptz().driver(), "refused_commands"), 2u);
+  } else {
+    // The zoom (already there) fails at once in socket 2, the pan when its motion ends in socket 1.
+    EXPECT_FALSE(devices.log.first_with({"could not finish the command in socket 2", "not executable"}).empty())
+        << devices.log.all();
+    EXPECT_FALSE(devices.log.first_with({"could not finish the command in socket 1", "not executable"}).empty())
+        << devices.log.all();
+    EXPECT_TRUE(eventually([&] { return counter(ptz().driver(), "late_errors") == 2; }));
+  }
+  EXPECT_TRUE(more_data(ptz(), 3)) << devices.log.all();
+  EXPECT_EQ(devices.log.count("lost the EVI-D30"), 0u) << devices.log.all();
+}
+
+INSTANTIATE_TEST_SUITE_P(Faults, Sonyevid30ErrorTest,
+                         ::testing::Values(ErringCamera::Fault::refuse_commands, ErringCamera::Fault::fail_after_ack));
+
 std::string load_error(const std::string& text) {
   ConfiguredDevices devices;
   try {

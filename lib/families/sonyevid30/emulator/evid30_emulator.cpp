@@ -114,7 +114,7 @@ void Evid30Emulator::command(const HostMessage& message) {
   }
   const int socket = static_cast<int>(free - sockets_.begin()) + 1;
   send(visca::ack(socket));
-  if (function) start(*function, message);
+  start(message);
   if (function && in_motion(*function) && message.kind != HostMessage::Kind::drive_pan_tilt &&
       message.kind != HostMessage::Kind::zoom_drive) {
     *free = function;  // completes when the target is reached (advance)
@@ -123,7 +123,7 @@ void Evid30Emulator::command(const HostMessage& message) {
   }
 }
 
-void Evid30Emulator::start(Function function, const HostMessage& message) {
+void Evid30Emulator::start(const HostMessage& message) {
   const double pan_speed = message.pan_speed / double(visca::kPanSpeedMax) * options_.pan_top_speed *
                            visca::kPanUnitsPerDegree;
   const double tilt_speed = message.tilt_speed / double(visca::kTiltSpeedMax) * options_.tilt_top_speed *
@@ -161,13 +161,18 @@ void Evid30Emulator::start(Function function, const HostMessage& message) {
     default:
       break;
   }
-  (void)function;
 }
 
 void Evid30Emulator::hold(Function function) {
-  for (const std::size_t i : function == kPanTilt ? std::vector<std::size_t>{kPan, kTilt} : std::vector{kZoom}) {
-    axes_[i].target = axes_[i].position;
-    axes_[i].driving = false;
+  auto stop = [](AxisState& axis) {
+    axis.target = axis.position;
+    axis.driving = false;
+  };
+  if (function == kPanTilt) {
+    stop(axes_[kPan]);
+    stop(axes_[kTilt]);
+  } else {
+    stop(axes_[kZoom]);
   }
 }
 

@@ -69,7 +69,7 @@ class Evid30Emulator final : public DeviceEmulator {
 
   void execute(std::span<const std::uint8_t> packet);
   void command(const hardware::sonyevid30::HostMessage& message);
-  void start(Function function, const hardware::sonyevid30::HostMessage& message);
+  void start(const hardware::sonyevid30::HostMessage& message);
   void hold(Function function);
   [[nodiscard]] bool in_motion(Function function) const;
   [[nodiscard]] bool moving(const AxisState& axis) const;
