@@ -55,7 +55,7 @@ class AmtecPowercubeDriver final : public hardware_driver::SerialDeviceDriver, p
   void start_device(links::ByteLink& link, bool recovering) override {
     wrist_ = std::make_unique<amtecpowercube::PowercubeWrist>(link, [this] { return stopping(); });
     try {
-      wrist_->start();
+      reach_ = wrist_->start();
     } catch (const links::ExchangeError& e) {
       if (e.kind() == links::ExchangeError::Kind::stopped) throw hardware_driver::Stopping();
       throw std::runtime_error(std::string(e.what()) + " (is it powered, at 38400 baud?)");
@@ -108,9 +108,10 @@ class AmtecPowercubeDriver final : public hardware_driver::SerialDeviceDriver, p
         wrist_->velocity(kModules[i], static_cast<float>(pc::radians(demand.value)));
         sent_[i] = demand;
       } else {
-        // A speed given with the target times the move (1.5 ignored it), never above `speed`.
+        // A speed given with the target times the move (1.5 ignored it), never
+        // above `speed`; the target is kept within the module's reach.
         const double speed = speeds[i] == 0 ? settings_.speed : std::min(std::fabs(speeds[i]), settings_.speed);
-        const Demand demand{angles[i], speed};
+        const Demand demand{reach_[i].clamp(angles[i]), speed};
         if (sent_[i] == demand) continue;
         const double from = pc::degrees(positions_[i]);
         wrist_->step(kModules[i], static_cast<float>(pc::radians(demand.value)),
@@ -161,6 +162,7 @@ class AmtecPowercubeDriver final : public hardware_driver::SerialDeviceDriver, p
   const amtecpowercube::PowercubeSettings settings_;
   std::unique_ptr<amtecpowercube::PowercubeWrist> wrist_;
   bool velocity_mode_ = false;
+  std::array<amtecpowercube::ModuleReach, 2> reach_{};
   std::array<std::optional<Demand>, 2> sent_{};
   std::array<double, 2> positions_{};  // radians, module convention, as last read
   Clock::time_point next_reading_{};

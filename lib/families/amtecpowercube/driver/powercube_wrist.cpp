@@ -1,6 +1,9 @@
 #include "families/amtecpowercube/driver/powercube_wrist.hpp"
 
+#include <algorithm>
 #include <stdexcept>
+
+#include "families/amtecpowercube/protocol/powercube_units.hpp"
 #include <string>
 
 namespace playerkit::drivers::amtecpowercube {
@@ -44,7 +47,9 @@ std::uint32_t PowercubeWrist::read_state(pc::Module module) {
   return *pc::reply_value(ask(module, pc::get_data(pc::Parameter::state)), pc::Parameter::state);
 }
 
-void PowercubeWrist::start() {
+double ModuleReach::clamp(double degrees) const { return min < max ? std::clamp(degrees, min, max) : degrees; }
+
+std::array<ModuleReach, 2> PowercubeWrist::start() {
   for (const pc::Module module : {pc::Module::pan, pc::Module::tilt}) {
     try {
       (void)read_float(module, pc::Parameter::position);
@@ -53,9 +58,17 @@ void PowercubeWrist::start() {
       throw links::ExchangeError(e.kind(), std::string("the ") + module_name(module) + " does not answer");
     }
   }
+  // A step beyond its limits is a module's error: targets are kept within them.
+  std::array<ModuleReach, 2> reach{};
+  for (std::size_t i = 0; i < reach.size(); ++i) {
+    const pc::Module module = i == 0 ? pc::Module::pan : pc::Module::tilt;
+    reach[i] = {pc::degrees(read_float(module, pc::Parameter::min_position)),
+                pc::degrees(read_float(module, pc::Parameter::max_position))};
+  }
   for (const pc::Module module : {pc::Module::pan, pc::Module::tilt}) ask(module, pc::reset_data());
   home(pc::Module::pan);
   home(pc::Module::tilt);
+  return reach;
 }
 
 void PowercubeWrist::home(pc::Module module) {

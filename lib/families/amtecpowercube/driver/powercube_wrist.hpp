@@ -6,6 +6,7 @@
 // 1.5, no read and no homing waits forever, and a reply must come from the
 // module asked and echo the command it answers.
 
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -21,6 +22,14 @@ namespace playerkit::drivers::amtecpowercube {
 
 namespace pc = hardware::powercube;
 
+// A module's position limits as it reports them, degrees (module convention).
+struct ModuleReach {
+  double min = 0;
+  double max = 0;
+  // Limits with min >= max are no limits (a module that reports none).
+  [[nodiscard]] double clamp(double degrees) const;
+};
+
 class PowercubeWrist {
  public:
   // `link` must outlive the wrist; `stopping` is asked while waiting.
@@ -33,9 +42,10 @@ class PowercubeWrist {
   [[nodiscard]] float read_float(pc::Module module, pc::Parameter parameter);
   [[nodiscard]] std::uint32_t read_state(pc::Module module);
 
-  // Each module answers its position, or std::runtime_error names the one
-  // that does not; then both are reset and homed (pan first, as 1.5 did).
-  void start();
+  // Each module answers its position, or an ExchangeError names the one
+  // that does not; its limits are read; then both are reset and homed (pan
+  // first, as 1.5 did). The reach of pan and tilt, in that order.
+  std::array<ModuleReach, 2> start();
   // Homes one module and waits for its homed bit (std::runtime_error after kHomingTimeout).
   void home(pc::Module module);
   void halt(pc::Module module) { ask(module, pc::halt_data()); }
