@@ -10,7 +10,7 @@ teardown() {
   kill_left_running "${emulator_pid:-}" "${server_pid:-}"
 }
 
-@test "a GPS receiver: emulate, probe (it only listens), run a fix as JSON" {
+@test "a GPS receiver: emulate, probe (no other family takes its sentences), run a fix as JSON" {
   gps="$BATS_TEST_TMPDIR/gps"
   start_emulator "$BATS_TEST_TMPDIR/emulate.out" "$BATS_TEST_TMPDIR/emulate.err" garminnmea --link "$gps"
   grep -qx "garminnmea on $gps: gps:0 ( driver \"garminnmea\" port \"$gps\" )" "$BATS_TEST_TMPDIR/emulate.out"

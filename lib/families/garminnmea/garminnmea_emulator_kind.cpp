@@ -12,6 +12,14 @@ namespace {
 
 using emulators::EmulatorOptionReader;
 
+int line_speed(const EmulatorOptionReader& options) {
+  const int baud = options.integer("baud", 4800, 0, 115200);
+  if (baud != 0 && baud != 4800 && baud != 9600 && baud != 19200 && baud != 38400 && baud != 57600 && baud != 115200) {
+    options.fail("baud", "a receiver runs at 4800, 9600, 19200, 38400, 57600 or 115200 (0: any speed)");
+  }
+  return baud;
+}
+
 std::unique_ptr<emulators::DeviceEmulator> playing(const EmulatorOptionReader& options) {
   const std::string path = options.text("log", "");
   std::ifstream in(path);
@@ -22,6 +30,7 @@ std::unique_ptr<emulators::DeviceEmulator> playing(const EmulatorOptionReader& o
     playback.sentences.push_back(line);
   }
   playback.loop = options.flag("loop", false);
+  playback.baud = line_speed(options);
   playback.rate = options.number("rate", 1.0, 0.01, 1000.0);
   playback.start = std::chrono::duration_cast<emulators::Duration>(
       std::chrono::duration<double>(options.number("start", 0.0, 0.0, 60.0)));
@@ -70,6 +79,7 @@ std::unique_ptr<emulators::DeviceEmulator> generating(const EmulatorOptionReader
       std::chrono::duration<double>(options.number("period", 1.0, 0.05, 60.0)));
   settings.decimals = options.integer("decimals", 6, 1, 7);
   settings.fix = options.flag("fix", true);
+  settings.baud = line_speed(options);
   settings.quality = options.integer("quality", 1, 1, 8);
   settings.satellites = options.integer("satellites", 8, 0, 12);
   settings.hdop = options.number("hdop", 0.9, 0.1, 99.9);
@@ -102,6 +112,7 @@ emulators::EmulatorKind garminnmea_emulator_kind() {
               {"quality", "1", "the GGA fix quality: 1 GPS, 2 DGPS"},
               {"satellites", "8", "satellites used, 0 to 12"},
               {"hdop", "0.9", "horizontal dilution of precision"},
+              {"baud", "4800", "the line speed: a host that writes at another reads garbage (0: any speed)"},
           },
       .make =
           [](const EmulatorOptionReader& reader, const emulators::EmulatorWorld& world) {

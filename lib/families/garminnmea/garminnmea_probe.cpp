@@ -1,7 +1,10 @@
 // "Who are you?" on a line, NMEA style: a receiver never answers, it talks,
-// so the probe only listens, and two sentences with good checksums are a
-// receiver (one could be chance at the wrong speed). Nothing is sent.
+// so the probe listens, and two sentences with good checksums are a
+// receiver (one could be chance at the wrong speed). It sends only an empty
+// line first (CR LF), which receivers ignore, so that a device that models
+// its line speed hears which one the host is at.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <set>
 #include <string>
@@ -14,16 +17,20 @@ namespace playerkit::families {
 
 std::optional<Identification> probe_garminnmea(const ProbeContext& line) {
   const framing::NmeaFormat format;
+  const std::array<std::uint8_t, 2> empty_line{'\r', '\n'};
+  line.link.write_all(empty_line, line.first_reply);
   links::FramedReader reader(line.link, format, 128);
   std::set<std::string> addresses;
   const auto note = [&addresses](std::span<const std::uint8_t> sentence) {
     const std::string_view body = framing::nmea_body(sentence);
     addresses.emplace(body.substr(0, body.find(',')));
   };
-  // A receiver sends once a second and may be between two bursts: listen
-  // for the whole exchange's time, not only for a first reply's.
+  // A receiver keeps the line busy: a line silent until the first reply's
+  // deadline has none (and costs other families' probes no more time);
+  // bytes that are not yet a sentence get the whole exchange's time.
   for (int good = 0; good < 2; ++good) {
-    const auto sentence = reader.next(line.finish);
+    auto sentence = reader.next(good == 0 ? line.first_reply : line.finish);
+    if (!sentence && good == 0 && reader.buffered() > 0) sentence = reader.next(line.finish);
     if (!sentence) return std::nullopt;
     note(*sentence);
   }

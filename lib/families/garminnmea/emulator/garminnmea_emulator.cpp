@@ -52,21 +52,47 @@ GarminNmeaEmulator::GarminNmeaEmulator(GarminNmeaPlayback playback) : playing_(t
   next_due_ = loop_start_ = std::max(Duration::zero(), playback_.start);
 }
 
-void GarminNmeaEmulator::receive(std::span<const std::uint8_t> bytes, Duration now, int /*host_baud*/) {
+void GarminNmeaEmulator::receive(std::span<const std::uint8_t> bytes, Duration now, int host_baud) {
   // RTCM corrections, or anything else: the receiver ignores them (sheet §6.6).
   bytes_received_ += bytes.size();
+  if (host_baud != 0 && !bytes.empty()) host_baud_ = host_baud;
   advance(now);
 }
 
+void GarminNmeaEmulator::host_disconnected(Duration /*now*/) { host_baud_ = 0; }
+
+void GarminNmeaEmulator::garble(std::vector<std::uint8_t>& bytes) {
+  // What a UART at the wrong speed makes of a character: never printable
+  // text, so no sentence can appear in it.
+  for (std::uint8_t& byte : bytes) {
+    noise_state_ ^= noise_state_ << 13;
+    noise_state_ ^= noise_state_ >> 17;
+    noise_state_ ^= noise_state_ << 5;
+    byte = static_cast<std::uint8_t>(0x80 | (noise_state_ & 0x7F));
+  }
+}
+
 void GarminNmeaEmulator::advance(Duration now) {
-  while (next_due_ <= now) {
-    if (playing_) {
-      play_due();
+  if (playing_) {
+    while (next_due_ <= now) play_due();
+    return;
+  }
+  while (true) {
+    const Duration line_due = pending_.empty() ? Duration::max() : pending_.front().first;
+    if (std::min(line_due, next_due_) > now) return;
+    if (line_due <= next_due_) {
+      send(pending_.front().second);
+      pending_.pop_front();
     } else {
-      generate_cycle();
+      generate_cycle(next_due_);
       next_due_ += generated_.period;
     }
   }
+}
+
+Duration GarminNmeaEmulator::next_deadline() const {
+  if (playing_ || pending_.empty()) return next_due_;
+  return std::min(next_due_, pending_.front().first);
 }
 
 std::vector<Telegram> GarminNmeaEmulator::take_output() { return std::exchange(output_, {}); }
@@ -75,7 +101,12 @@ void GarminNmeaEmulator::send(const std::string& line) {
   std::vector<std::uint8_t> bytes(line.begin(), line.end());
   bytes.push_back('\r');
   bytes.push_back('\n');
-  output_.push_back({std::move(bytes), true});
+  if (baud() != 0 && host_baud_ != 0 && host_baud_ != baud()) {
+    garble(bytes);
+    output_.push_back({std::move(bytes), false});
+  } else {
+    output_.push_back({std::move(bytes), true});
+  }
   ++sentences_sent_;
 }
 
@@ -119,7 +150,8 @@ void GarminNmeaEmulator::play_due() {
 
 void GarminNmeaEmulator::schedule_after_playing(std::size_t length) {
   // The bytes just sent take their time on the line (10 bits a character).
-  Duration due = next_due_ + seconds_as_duration(static_cast<double>(length) * 10.0 / playback_.baud / playback_.rate);
+  const double baud = playback_.baud > 0 ? playback_.baud : 4800.0;
+  Duration due = next_due_ + seconds_as_duration(static_cast<double>(length) * 10.0 / baud / playback_.rate);
   if (const auto time = recorded_time(playback_.sentences[next_line_])) {
     double unwrapped = *time + day_offset_;
     if (last_time_ >= 0 && unwrapped < last_time_ - kDay / 2) {
@@ -171,7 +203,7 @@ std::vector<std::string> GarminNmeaEmulator::cycle_bodies(const GarminNmeaGenera
   return bodies;
 }
 
-void GarminNmeaEmulator::generate_cycle() {
+void GarminNmeaEmulator::generate_cycle(Duration at) {
   const double elapsed = std::chrono::duration<double>(generated_.period).count() * static_cast<double>(cycles_);
   const double since_midnight = generated_.start_time_of_day + elapsed;
   const auto day = gps::days_since_epoch(generated_.date) + static_cast<std::int64_t>(std::floor(since_midnight / kDay));
@@ -183,10 +215,13 @@ void GarminNmeaEmulator::generate_cycle() {
   const gps::LatLon here = gps::from_utm(origin);
   last_latitude_ = here.latitude;
   last_longitude_ = here.longitude;
-  for (const std::string& body : cycle_bodies(generated_, std::fmod(since_midnight, kDay), gps::date_from_days(day),
-                                              here.latitude, here.longitude)) {
-    const auto bytes = framing::nmea_sentence(body);
-    send(std::string(bytes.begin(), bytes.end() - 2));
+  const auto bodies =
+      cycle_bodies(generated_, std::fmod(since_midnight, kDay), gps::date_from_days(day), here.latitude, here.longitude);
+  // The first line at once, the rest over four fifths of the cycle.
+  const Duration spacing = generated_.period * 4 / 5 / static_cast<long>(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const auto bytes = framing::nmea_sentence(bodies[i]);
+    pending_.emplace_back(at + spacing * static_cast<long>(i), std::string(bytes.begin(), bytes.end() - 2));
   }
   ++cycles_;
 }

@@ -6,7 +6,9 @@
 //  * it streams from the start, whatever the host does, at any baud rate;
 //    bytes from the host (RTCM corrections) are read and ignored;
 //  * every cycle (1 s): RMC, GGA, GSA, GSV, PGRME, GLL, PGRMZ, PGRMM, each a
-//    telegram of its own, CR LF, checksummed, at most 82 characters; GGA has
+//    telegram of its own, spread over most of the cycle as a receiver at
+//    4800 baud keeps the line busy (a listener never waits long for a
+//    sentence), CR LF, checksummed, at most 82 characters; GGA has
 //    all 14 fields, 2 degree digits of latitude and 3 of longitude, always
 //    populated while it has a fix;
 //  * the position is where the antenna is in a geo-referenced world: the
@@ -14,11 +16,17 @@
 //    back from UTM in the origin's zone, so a robot's path in metres is the
 //    same path in UTM metres;
 //
+//  * at its own line speed (4800): a host that writes at another speed (a
+//    probe for another device) reads garbage, as through a real UART; one
+//    that has written nothing since it opened the line is taken to listen
+//    at the right one;
+//
 // or it plays a recorded log (lines starting with `$`) at the log's own
 // pace: sentences a new time of day apart go out that far apart (divided by
 // `rate`), the rest one after another at the line's speed.
 
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <string>
 #include <vector>
@@ -40,6 +48,8 @@ struct GarminNmeaGenerated {
   Duration period = std::chrono::seconds(1);
   int decimals = 6;  // of the minutes: 6 is 2 mm, 4 (a Geko's) is 18 cm
   bool fix = true;   // false: the receiver searches (GGA quality 0, RMC and GLL status V)
+  // The line speed; a host heard writing at another reads garbage (0: any speed).
+  int baud = 4800;
   int quality = 1;
   int satellites = 8;
   double hdop = 0.9;
@@ -51,7 +61,7 @@ struct GarminNmeaPlayback {
   std::vector<std::string> sentences;  // as recorded, without line ends
   bool loop = false;
   double rate = 1.0;  // 2: twice as fast as recorded
-  int baud = 4800;    // the recorded line's speed, for the bytes of one cycle
+  int baud = 4800;    // the recorded line's speed (pacing; a host at another reads garbage; 0: any)
   // Silence before the first sentence: time for the host to open the line,
   // so that a test hears the log from its first sentence.
   Duration start{0};
@@ -64,8 +74,10 @@ class GarminNmeaEmulator final : public DeviceEmulator {
   explicit GarminNmeaEmulator(GarminNmeaPlayback playback);
 
   void receive(std::span<const std::uint8_t> bytes, Duration now, int host_baud) override;
+  void host_disconnected(Duration now) override;
+  [[nodiscard]] int baud() const override { return playing_ ? playback_.baud : generated_.baud; }
   void advance(Duration now) override;
-  [[nodiscard]] Duration next_deadline() const override { return next_due_; }
+  [[nodiscard]] Duration next_deadline() const override;
   std::vector<Telegram> take_output() override;
   [[nodiscard]] std::string describe() const override;
 
@@ -84,10 +96,11 @@ class GarminNmeaEmulator final : public DeviceEmulator {
                                                double longitude);
 
  private:
-  void generate_cycle();
+  void generate_cycle(Duration at);
   void play_due();
   void schedule_after_playing(std::size_t length);
   void send(const std::string& line);
+  void garble(std::vector<std::uint8_t>& bytes);
 
   bool playing_ = false;
   GarminNmeaGenerated generated_;
@@ -98,11 +111,14 @@ class GarminNmeaEmulator final : public DeviceEmulator {
   double day_offset_ = 0;        // added to times of day that wrapped past midnight
   double last_time_ = -1;
 
-  Duration next_due_{0};
+  Duration next_due_{0};  // playback: the next line's; generation: the next cycle's
+  std::deque<std::pair<Duration, std::string>> pending_;  // a generated cycle's lines, spread over it
   std::vector<Telegram> output_;
   std::uint64_t sentences_sent_ = 0;
   std::uint64_t cycles_ = 0;
   std::uint64_t bytes_received_ = 0;
+  int host_baud_ = 0;  // the speed the host last wrote at; 0 unknown (it only listens)
+  std::uint32_t noise_state_ = 0x2545F491u;
   double last_latitude_ = 0;
   double last_longitude_ = 0;
 };
