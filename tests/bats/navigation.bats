@@ -9,6 +9,15 @@ teardown() {
   kill_left_running "${server_pid:-}" "${cat_pid:-}"
 }
 
+# arrived FILE X Y: the last wavefront sample in FILE says stopped (stall 1)
+# within 0.35 m of (X, Y) mm, after having driven (a stall 0 earlier).
+arrived() {
+  grep -q '"stall":0' "$1" &&
+    tail -n 1 "$1" | jq -e --argjson x "$2" --argjson y "$3" \
+      '.data.stall == 1 and ((.data.xpos - $x) * (.data.xpos - $x) + (.data.ypos - $y) * (.data.ypos - $y)) < 122500' \
+      >/dev/null 2>&1
+}
+
 # near_goal FILE X Y: the last vfh sample in FILE (player-cat JSON) is
 # stopped within 0.5 m of (X, Y) mm.
 near_goal() {
@@ -66,6 +75,37 @@ CFG
   "$player_send" "localhost:$server_port" position:1 cmd xpos=2000 ypos=500 yaw=0 type=1 state=1
   wait_until --pid "$cat_pid" --timeout 120 --log "$BATS_TEST_TMPDIR/serve.err" "vfh to stop at (2, 0.5)" \
     near_goal "$BATS_TEST_TMPDIR/vfh.jsonl" 2000 500
+  kill -TERM "$cat_pid"
+  stop_cleanly "$server_pid"
+}
+
+@test "the navigation loop of data/config/nav-sim.cfg: amcl, vfh and wavefront take the robot to a goal" {
+  start_server "$BATS_TEST_TMPDIR/serve.err" -s "$repo_root/data/worlds/simple.world" -p 0 --speedup 5 \
+    "$repo_root/data/config/nav-sim.cfg"
+  "$player_cat" "localhost:$server_port" position:2 --format json >"$BATS_TEST_TMPDIR/nav.jsonl" 2>"$BATS_TEST_TMPDIR/cat.err" &
+  cat_pid=$!
+  wait_for_nonempty --pid "$cat_pid" --log "$BATS_TEST_TMPDIR/cat.err" "$BATS_TEST_TMPDIR/nav.jsonl"
+  "$player_send" "localhost:$server_port" position:2 cmd xpos=5000 ypos=2000 yaw=0 type=1 state=1
+  wait_until --pid "$cat_pid" --timeout 120 --log "$BATS_TEST_TMPDIR/serve.err" "the robot at (5, 2)" \
+    arrived "$BATS_TEST_TMPDIR/nav.jsonl" 5000 2000
+  # The simulator's truth agrees with the estimate.
+  run --separate-stderr timeout 30 "$player_cat" "localhost:$server_port" truth:0 -n 1 --format json
+  [ "$status" -eq 0 ]
+  jq -e '((.data.px - 5000) * (.data.px - 5000) + (.data.py - 2000) * (.data.py - 2000)) < 160000' <<<"$output"
+  kill -TERM "$cat_pid"
+  stop_cleanly "$server_pid"
+}
+
+@test "wavefront refuses a goal inside a wall at once and says why" {
+  start_server "$BATS_TEST_TMPDIR/serve.err" -s "$repo_root/data/worlds/simple.world" -p 0 --speedup 5 \
+    "$repo_root/data/config/nav-sim.cfg"
+  "$player_cat" "localhost:$server_port" position:2 --format json >"$BATS_TEST_TMPDIR/nav.jsonl" 2>"$BATS_TEST_TMPDIR/cat.err" &
+  cat_pid=$!
+  wait_for_nonempty --pid "$cat_pid" --log "$BATS_TEST_TMPDIR/cat.err" "$BATS_TEST_TMPDIR/nav.jsonl"
+  # (0.1, 0.1): in the cave's outer wall.
+  "$player_send" "localhost:$server_port" position:2 cmd xpos=100 ypos=100 yaw=0 type=1 state=1
+  wait_for_line --pid "$server_pid" "$BATS_TEST_TMPDIR/serve.err" "goal \(0\.1.*refused: "
+  ! grep -q '"stall":0' "$BATS_TEST_TMPDIR/nav.jsonl"
   kill -TERM "$cat_pid"
   stop_cleanly "$server_pid"
 }
