@@ -33,7 +33,8 @@ std::string connection_key(const Cmucam2Settings& settings) { return "cmucam2 " 
 
 Cmucam2Connection::Cmucam2Connection(Cmucam2Settings settings, core::Logger& logger)
     : RobotConnection(settings.port, {.baud = 115200}, logger, "cmucam2 " + settings.port),
-      settings_(std::move(settings)) {}
+      settings_(std::move(settings)),
+      colors_(settings_.colors) {}
 
 Cmucam2Connection::~Cmucam2Connection() { stop_io_thread(); }
 
@@ -192,7 +193,7 @@ void Cmucam2Connection::publish_blobs() {
   protocol::BlobfinderData data;
   data.width = kFrameWidth;
   data.height = kFrameHeight;
-  for (const cam::ColorBounds& color : settings_.colors) {
+  for (const cam::ColorBounds& color : colors_) {
     const cam::TPacket packet = camera_->track(color);
     ++packets_;
     if (packet.pixels == 0 && packet.mx == 0) continue;  // not in view: no blob
@@ -245,7 +246,22 @@ double Cmucam2Connection::degrees_of(double position) const {
 
 core::RequestResult Cmucam2Connection::handle_request(Cmucam2Role role, const core::Request& request) {
   if (role == Cmucam2Role::ptz) return interfaces::answer_ptz_request(*this, request);
-  return core::RequestResult::nack();  // 1.5 had no blobfinder requests (its server answered ERR)
+  return set_color(request);
+}
+
+// SET_COLOR: the first colour tracked from now on (1.5 had no blobfinder
+// requests: its server answered ERR). The camera has no automatic bounds
+// (-1), and IMAGER_PARAMS is not offered.
+core::RequestResult Cmucam2Connection::set_color(const core::Request& request) {
+  if (request.payload.size() != protocol::BlobfinderColorConfig::kWireSize ||
+      request.payload.front() != protocol::kBlobfinderSetColorReq) {
+    return core::RequestResult::nack();
+  }
+  const auto asked = protocol::decode<protocol::BlobfinderColorConfig>(request.payload);
+  const cam::ColorBounds bounds{asked.rmin, asked.rmax, asked.gmin, asked.gmax, asked.bmin, asked.bmax};
+  if (!bounds.valid()) return core::RequestResult::nack();
+  colors_.front() = bounds;
+  return core::RequestResult::ack();
 }
 
 bool Cmucam2Connection::set_control_mode(std::uint8_t mode) {

@@ -87,6 +87,7 @@ class Cmucam2Connection final : public hardware_driver::RobotConnection, private
 
   // interfaces::PtzHead
   bool set_control_mode(std::uint8_t mode) override;
+  core::RequestResult set_color(const core::Request& request);
 
   const Cmucam2Settings settings_;
   mutable std::mutex views_mutex_;
@@ -96,6 +97,7 @@ class Cmucam2Connection final : public hardware_driver::RobotConnection, private
   std::atomic<std::uint64_t> refused_{0};
 
   // The I/O thread's.
+  std::vector<cam::ColorBounds> colors_;  // the configured ones; SET_COLOR replaces the first
   std::unique_ptr<CmucamCamera> camera_;
   std::array<Axis, 2> axes_{};
   bool velocity_control_ = false;

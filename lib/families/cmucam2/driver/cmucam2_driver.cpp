@@ -72,7 +72,7 @@ core::DriverFactory factory_for(std::string driver) {
 
 std::vector<core::DriverSpec> cmucam2_driver_specs() {
   const std::vector<std::string> requests{
-      "blobfinder: none (NACK; 1.5's server answered ERR)",
+      "blobfinder SET_COLOR: the bounds of color0 from now on (0 to 255, each min <= max); others NACK",
       "ptz CONTROL_MODE: position (servo targets) or velocity (servos stepped at the signed speeds)",
       "ptz GENERIC_CONFIG: NACK"};
   core::DriverSpec camera{

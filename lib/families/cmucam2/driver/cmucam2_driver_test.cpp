@@ -81,6 +81,23 @@ TEST_F(Cmucam2DriverTest, ReportsTheBlobsOfTheConfiguredColours) {
   EXPECT_GE(camera.with([](Cmucam2Emulator& e) { return e.packets(); }), packets + 6);
 }
 
+TEST_F(Cmucam2DriverTest, SetColorChangesTheFirstColourTracked) {
+  load("blobfinder:0 ( driver \"cmucam2\" devicepath \"$PORT\" color0 [200 240 16 60 16 60] )\n");
+  ASSERT_TRUE(blobfinder().subscribe()) << devices.log.all();
+  const protocol::BlobfinderColorConfig green{.subtype = protocol::kBlobfinderSetColorReq,
+                                              .rmin = 16, .rmax = 60, .gmin = 180, .gmax = 240, .bmin = 16, .bmax = 60};
+  EXPECT_TRUE(acked(ask(blobfinder(), green)));
+  EXPECT_TRUE(camera.wait_until([](Cmucam2Emulator& e) { return e.tracked() && e.tracked()->green_min == 180; }));
+  const auto data = data_when<protocol::BlobfinderData>(
+      blobfinder(), [](const protocol::BlobfinderData& d) { return sees(d, 0x26d226u); });
+  ASSERT_TRUE(data);
+  EXPECT_GT(data->blobs[0].x, 60);  // the green disc, to the right
+  auto automatic = green;
+  automatic.rmin = -1;
+  EXPECT_TRUE(nacked(ask(blobfinder(), automatic)));
+  EXPECT_TRUE(nacked(ask(blobfinder(), std::vector<std::uint8_t>{2, 0, 0, 0, 0, 0, 0})));  // IMAGER_PARAMS
+}
+
 TEST_F(Cmucam2DriverTest, AColourOutOfViewIsNoBlob) {
   load("blobfinder:0 ( driver \"cmucam2\" devicepath \"$PORT\" color0 [100 110 100 110 240 250] )\n");
   ASSERT_TRUE(blobfinder().subscribe()) << devices.log.all();
