@@ -172,7 +172,9 @@ struct GarminNmeaLogTest : GarminNmeaDriverTest {
       emulators::GarminNmeaPlayback playback;
       playback.sentences = sentences;
       playback.rate = 20;
-      playback.start = std::chrono::seconds(1);  // the driver has the line open by then
+      // The driver opens the line within a few milliseconds; two seconds
+      // leave room for a loaded machine (a sanitizer build on two cores).
+      playback.start = std::chrono::seconds(2);
       return std::make_unique<GarminNmeaEmulator>(playback);
     };
   }
