@@ -59,9 +59,11 @@ void Cmucam2Emulator::execute(const std::string& line) {
   }
   if (name == "TC" && (args.size() == 6 || (args.empty() && tracked_))) {
     if (args.size() == 6) {
-      const cam::ColorBounds bounds{args[0], args[1], args[2], args[3], args[4], args[5]};
-      if (!bounds.valid()) return nck();
-      tracked_ = bounds;
+      // Never NCK a TC (cmucam2.md §6.4: the 1.5 driver would hang): bounds
+      // beyond a byte are taken at the byte's end; crossed ones match nothing.
+      const auto byte = [](int value) { return std::clamp(value, 0, 255); };
+      tracked_ = cam::ColorBounds{byte(args[0]), byte(args[1]), byte(args[2]),
+                                  byte(args[3]), byte(args[4]), byte(args[5])};
     }
     say("ACK\r");
     next_packet_ = now_ + options_.frame_period;

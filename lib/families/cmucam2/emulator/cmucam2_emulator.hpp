@@ -6,7 +6,8 @@
 //    sent until the camera is spoken to;
 //  * `PM 0|1`, a lone CR, `SV`, `CP`, `CR` answer `ACK` CR `:`; GS and GV
 //    answer `ACK` CR, a line, `:`; anything else `NCK` CR `:`;
-//  * `TC` (six bounds, or none for the last ones) answers `ACK` CR at once
+//  * `TC` (six bounds, or none for the last ones) answers `ACK` CR at once,
+//    never NCK (bounds beyond a byte are clamped),
 //    and then, one frame later, the T packet of the tracked colour in the
 //    scene as the servos point the camera: in poll mode one packet (then
 //    `:` when `prompt_after_packet`, as the real camera; without it every

@@ -59,10 +59,12 @@ TEST(Cmucam2Emulator, SaysNothingUntilSpokenToThenAnswersAsTheSheetSays) {
   EXPECT_EQ(camera.say(""), "ACK\r:");  // a lone CR (§6.5)
   EXPECT_EQ(camera.say("XY 3"), "NCK\r:");  // unknown (§6.7)
   EXPECT_EQ(camera.say("PM 2"), "NCK\r:");
-  EXPECT_EQ(camera.say("TC 300 240 16 60 16 60"), "NCK\r:");  // bounds the camera cannot have
   EXPECT_EQ(camera.say("GV"), "ACK\rCMUcam2 v1.00 c6\r:");
   EXPECT_EQ(camera.say("CP 1"), "ACK\r:");
-  EXPECT_EQ(camera.emulator.refused(), 3u);
+  EXPECT_EQ(camera.emulator.refused(), 2u);
+  // A TC is never refused (§6.4): a bound beyond a byte is taken at its end.
+  EXPECT_EQ(camera.say("TC 200 300 16 60 16 60"), "ACK\r");
+  EXPECT_EQ(camera.emulator.tracked(), (cam::ColorBounds{200, 255, 16, 60, 16, 60}));
 }
 
 TEST(Cmucam2Emulator, InPollModeAnswersTcWithAckThenOnePacketAFrameLaterAndThePrompt) {
