@@ -34,7 +34,7 @@ namespace pc = hardware::powercube;
 double module_degrees(PowercubeEmulator& e, Module module) { return pc::degrees(e.position(module)); }
 
 struct PowercubeDriverTest : ::testing::Test {
-  explicit PowercubeDriverTest(LineOptions options = {}, PowercubeEmulatorOptions wrist = {.pan_start = -30, .tilt_start = 10})
+  explicit PowercubeDriverTest(LineOptions options = {}, PowercubeEmulatorOptions wrist = {.pan_start = -5, .tilt_start = 3})
       : unit([wrist] { return std::make_unique<PowercubeEmulator>(wrist); }, std::move(options)) {}
 
   core::Device& ptz() { return devices.device(protocol::kPtzCode); }
