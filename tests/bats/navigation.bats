@@ -109,3 +109,14 @@ CFG
   kill -TERM "$cat_pid"
   stop_cleanly "$server_pid"
 }
+
+@test "a Player 1.5 C client sends wavefront a goal and polls its stall flag until the robot is there" {
+  goto_goal="$build_dir/examples/goto-goal/goto-goal"
+  start_server "$BATS_TEST_TMPDIR/serve.err" -s "$repo_root/data/worlds/simple.world" -p 0 --speedup 5 \
+    "$repo_root/data/config/nav-sim.cfg"
+  run --separate-stderr timeout 180 "$goto_goal" 127.0.0.1 "$server_port" 2 8000 6000 0
+  [ "$status" -eq 0 ]
+  read -r _ _ x y yaw <<<"$output"
+  [ $(((x - 8000) * (x - 8000) + (y - 6000) * (y - 6000))) -lt 122500 ]
+  stop_cleanly "$server_pid"
+}

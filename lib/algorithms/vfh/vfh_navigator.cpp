@@ -5,9 +5,17 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <limits>
 #include <stdexcept>
 
 namespace playerkit::vfh {
+
+namespace {
+
+// Getting this much nearer the goal counts as progress.
+constexpr double kProgress = 0.25;  // m
+
+}  // namespace
 
 VfhNavigator::VfhNavigator(const NavigatorSettings& settings) : settings_(settings), planner_(settings.planner) {
   if (!(settings.distance_epsilon > 0) || !(settings.angle_epsilon > 0)) {
@@ -24,7 +32,9 @@ void VfhNavigator::go_to(const geometry::Pose2& goal) {
   mode_ = Mode::goal;
   planner_.reset();
   backing_off_ = 0;
-  blocked_turned_ = 0;
+  closest_ = std::numeric_limits<double>::infinity();
+  turned_without_progress_ = 0;
+  escaping_ = false;
 }
 
 void VfhNavigator::drive(double speed, double turn_rate) {
@@ -95,23 +105,37 @@ Motion VfhNavigator::towards_goal(const geometry::Pose2& pose, const Scan& scan,
     }
     return turn_in_place(heading_error);
   }
-  const double desired = wrap_degrees(90.0 + (std::atan2(dy, dx) - pose.yaw) * kDegreesPerRadian);
-  // Arrive without circling: no faster than stops in the distance left, and
-  // than turns on a circle of half of it (1.5 circled goals it never slowed for).
-  const double limit = std::min(std::sqrt(2.0 * p.acceleration * distance), p.max_turn_rate * distance / 2.0);
-  const Steering steering = planner_.step(scan, desired, dt, limit);
-  if (steering.blocked) {
-    blocked_turned_ += std::abs(steering.turn_rate) * dt;
-    if (blocked_turned_ >= 2.0 * std::numbers::pi) {
-      ++stuck_events_;
-      mode_ = Mode::idle;
-      blocked_turned_ = 0;
-      return {.stuck = true};
-    }
-  } else {
-    blocked_turned_ = 0;
+  if (distance < closest_ - kProgress) {
+    closest_ = distance;
+    turned_without_progress_ = 0;
   }
-  return {.speed = steering.speed, .turn_rate = steering.turn_rate};
+  // A goal well off to the side or behind: turn towards it on the spot
+  // first (1.5's wavefront inserted rotation waypoints for this); driving
+  // on, the robot would circle it or sweep wide past it. Not while escaping
+  // a dead end, which would turn it straight back in.
+  const double bearing_error = geometry::angle_difference(std::atan2(dy, dx), pose.yaw);
+  Motion motion;
+  if (!escaping_ && std::abs(bearing_error) > settings_.turn_first_angle) {
+    planner_.reset();
+    motion = turn_in_place(bearing_error);
+  } else {
+    const double desired = wrap_degrees(90.0 + bearing_error * kDegreesPerRadian);
+    // Arrive without circling: no faster than stops in the distance left, and
+    // than turns on a circle of half of it (1.5 circled goals it never slowed for).
+    const double limit = std::min(std::sqrt(2.0 * p.acceleration * distance), p.max_turn_rate * distance / 2.0);
+    const Steering steering = planner_.step(scan, desired, dt, limit);
+    escaping_ = steering.blocked;
+    motion = {.speed = steering.speed, .turn_rate = steering.turn_rate};
+  }
+  // Turning round and round without getting nearer: spinning in a dead end,
+  // or rocking between two ways round. Give up and say so.
+  turned_without_progress_ += std::abs(motion.turn_rate) * dt;
+  if (turned_without_progress_ >= settings_.stuck_turn) {
+    ++stuck_events_;
+    mode_ = Mode::idle;
+    return {.stuck = true};
+  }
+  return motion;
 }
 
 }  // namespace playerkit::vfh

@@ -4,7 +4,8 @@
 // the VfhPlanner; speeds passed through with the forward speed capped by the
 // room ahead (velocity mode; 1.5 passed them only while a goal was active,
 // and blindly); a stall escape; and "stuck", said once, when no way opens
-// for a whole turn in place, so that a global planner can plan again.
+// for a turn and a half without getting nearer, so that a global planner can
+// plan again. A goal more than 60 degrees off is turned to on the spot first.
 
 #include <cstdint>
 #include <numbers>
@@ -19,6 +20,8 @@ struct NavigatorSettings {
   VfhParameters planner;
   double distance_epsilon = 0.5;     // m: near enough to the goal
   double angle_epsilon = 10 * std::numbers::pi / 180;  // rad: facing it closely enough
+  double turn_first_angle = 60 * std::numbers::pi / 180;  // rad: a goal further off is turned to on the spot
+  double stuck_turn = 3 * std::numbers::pi;  // rad turned without getting 0.25 m nearer: stuck
   double backoff_speed = 0.1;        // m/s, backwards, after a stall
   double backoff_time = 1.0;         // s
 };
@@ -27,7 +30,7 @@ struct Motion {
   double speed = 0;      // m/s
   double turn_rate = 0;  // rad/s
   bool reached = false;  // the goal was reached in this step
-  bool stuck = false;    // the goal was given up in this step: no way for a whole turn
+  bool stuck = false;    // the goal was given up in this step: turning without getting nearer
 };
 
 class VfhNavigator {
@@ -63,8 +66,10 @@ class VfhNavigator {
   std::optional<geometry::Pose2> goal_;  // the last goal given, reached or not
   double commanded_speed_ = 0;
   double commanded_turn_ = 0;
-  double backing_off_ = 0;    // s of backing off left
-  double blocked_turned_ = 0; // rad turned in place while blocked
+  double backing_off_ = 0;               // s of backing off left
+  double closest_ = 0;                   // m: the nearest to the goal so far
+  double turned_without_progress_ = 0;   // rad turned since it last got nearer
+  bool escaping_ = false;                // the planner found no way at the last step
   std::uint64_t stuck_events_ = 0;
   std::uint64_t stalls_ = 0;
 };

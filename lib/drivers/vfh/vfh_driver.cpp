@@ -200,7 +200,7 @@ class VfhDriver final : public core::ThreadedDriver, private core::DeviceListene
     if (motion.stuck) {
       ++stuck_;
       stuck_flag_ = true;
-      device().logger().warning(device().name() + ": no way towards the goal for a whole turn; stopped");
+      device().logger().warning(device().name() + ": turned a turn and a half without getting nearer the goal; stopped");
     }
     stalls_ = navigator_.stalls();
 

@@ -8,7 +8,7 @@
 //
 // Goals are in the underlying device's odometric frame; the data it
 // publishes is that odometry, its stall flag also set once vfh gives a goal
-// up (boxed in for a whole turn) until the next command.
+// up (turning a turn and a half without getting nearer) until the next command.
 
 #include "core/driver_registry.hpp"
 
