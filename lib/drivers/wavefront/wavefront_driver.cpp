@@ -3,6 +3,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <mutex>
 #include <numbers>
@@ -206,8 +207,10 @@ class WavefrontDriver final : public core::ThreadedDriver, private core::DeviceL
     const wavefront::PlanResult result = planner_.plan({from.x, from.y}, {goal.x, goal.y});
     if (!result.found()) {
       ++refused_;
-      device().logger().warning(device().name() + ": goal (" + std::to_string(goal.x) + ", " + std::to_string(goal.y) +
-                                ") refused: " + wavefront::describe_failure(result, planner_.parameters()));
+      char where[64];
+      std::snprintf(where, sizeof where, "(%.2f, %.2f)", goal.x, goal.y);
+      device().logger().warning(device().name() + ": goal " + where + " refused: " +
+                                wavefront::describe_failure(result, planner_.parameters()));
       give_up();
       return;
     }
