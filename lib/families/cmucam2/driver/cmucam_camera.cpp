@@ -23,6 +23,14 @@ links::ReplyMatcher matcher_for(ReplyShape shape, std::string& data) {
     const cam::ReplyLine kind = cam::classify(text);
     if (!acked) {
       if (kind == cam::ReplyLine::nck) return links::ReplyMatch::refusal;
+      // An ACK cut short by line noise: the data line it announced still
+      // proves the command was taken (the input was flushed before sending).
+      if (kind == cam::ReplyLine::other && shape.lines == 1 && shape.accept(text)) {
+        acked = true;
+        data = std::string(text);
+        lines = 1;
+        return shape.prompt ? links::ReplyMatch::not_mine : links::ReplyMatch::mine;
+      }
       acked = kind == cam::ReplyLine::ack;
       return acked && shape.lines == 0 && !shape.prompt ? links::ReplyMatch::mine : links::ReplyMatch::not_mine;
     }
