@@ -5,12 +5,18 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cstdint>
+#include <stop_token>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "emulators/catalog/emulator_catalog.hpp"
 #include "emulators/runner/emulator_runner.hpp"
 #include "families/family_registry.hpp"
 #include "families/port_probe.hpp"
+#include "links/pseudo_terminal.hpp"
 
 namespace playerkit::families {
 namespace {
@@ -69,6 +75,22 @@ TEST(Ptu46Family, ProbeFindsAUnitWithEchoOffAndAnotherResolution) {
   const ProbeResult result = probe(unit.device_path());
   ASSERT_TRUE(result.found) << result.problem;
   EXPECT_EQ(result.found->model, "PTU-46, 92.5714 arc-seconds a pan position");
+}
+
+// A GPS receiver talking at 9600: every sentence ends "*hh", which a '*'
+// found anywhere would take for a value reply.
+TEST(Ptu46Family, ProbeDoesNotTakeAnNmeaSentencesChecksumForAnAnswer) {
+  links::PseudoTerminal receiver;
+  const std::string sentence = "$GPGSV,3,1,11,03,69,066,44,06,51,292,48,07,19,150,00,08,18,043,00*44\r\n";
+  std::jthread talking([&receiver, &sentence](std::stop_token stop) {
+    const std::vector<std::uint8_t> bytes(sentence.begin(), sentence.end());
+    while (!stop.stop_requested()) {
+      (void)receiver.write_all(bytes, links::deadline_in(std::chrono::milliseconds(200)));
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+  });
+  const ProbeResult result = probe(receiver.slave_path());
+  EXPECT_FALSE(result.found) << result.found->driver;
 }
 
 TEST(Ptu46Family, TraceFramingCutsRepliesIntoLines) {

@@ -1,7 +1,9 @@
 // "Who are you?" on a line, PTU-46 style: ask the pan resolution, which no
 // command changes, so probing leaves the unit as it was (echo and feedback
 // mode included: an echo before the answer is allowed for).
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "families/ptu46/protocol/ptu_commands.hpp"
 #include "families/ptu46/protocol/ptu_line_format.hpp"
@@ -13,6 +15,26 @@
 namespace playerkit::families {
 
 namespace ptu = hardware::ptu46;
+
+namespace {
+
+// The answer to PR alone on its line, or behind the echo of "pr": never a
+// '*' inside other traffic, such as the "*44" checksum that ends every NMEA
+// sentence of a GPS receiver talking at the probe's speed.
+std::optional<ptu::Reply> answer_to_pan_resolution(std::string_view line) {
+  const auto skip_blanks = [](std::string_view text) {
+    const std::size_t first = text.find_first_not_of(" \t");
+    return first == std::string_view::npos ? std::string_view{} : text.substr(first);
+  };
+  std::string_view rest = skip_blanks(line);
+  if (rest.size() >= 2 && (rest[0] == 'p' || rest[0] == 'P') && (rest[1] == 'r' || rest[1] == 'R')) {
+    rest = skip_blanks(rest.substr(2));
+  }
+  if (rest.empty() || rest.front() != '*') return std::nullopt;
+  return ptu::parse_reply(rest);
+}
+
+}  // namespace
 
 std::optional<Identification> probe_ptu46(const ProbeContext& line) {
   const framing::TerminatedLineFormat format(ptu::reply_line_options());
@@ -28,7 +50,7 @@ std::optional<Identification> probe_ptu46(const ProbeContext& line) {
        .bytes = request,
        .matcher =
            [&resolution](std::span<const std::uint8_t> telegram) {
-             const auto reply = ptu::parse_reply_after_echo(framing::line_text(telegram));
+             const auto reply = answer_to_pan_resolution(framing::line_text(telegram));
              if (!reply || reply->kind != ptu::Reply::Kind::value || *reply->number <= 0) {
                return links::ReplyMatch::not_mine;
              }
