@@ -12,14 +12,14 @@
 
 namespace playerkit::drivers::garminnmea {
 
-DgpsRelay::DgpsRelay(const std::string& group, int port) {
+DgpsRelay::DgpsRelay(const std::string& group, int port, const std::string& bind_address) {
   socket_ = ::socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
   if (socket_ < 0) throw std::runtime_error(std::string("no UDP socket for DGPS corrections: ") + std::strerror(errno));
   const int yes = 1;
   ::setsockopt(socket_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
   sockaddr_in address{};
   address.sin_family = AF_INET;
-  address.sin_addr.s_addr = htonl(INADDR_ANY);
+  inet_pton(AF_INET, bind_address.c_str(), &address.sin_addr);  // checked with the options
   address.sin_port = htons(static_cast<std::uint16_t>(port));
   if (::bind(socket_, reinterpret_cast<const sockaddr*>(&address), sizeof address) != 0) {
     const std::string why = std::strerror(errno);
@@ -28,7 +28,7 @@ DgpsRelay::DgpsRelay(const std::string& group, int port) {
   }
   ip_mreq membership{};
   inet_pton(AF_INET, group.c_str(), &membership.imr_multiaddr);
-  membership.imr_interface.s_addr = htonl(INADDR_ANY);
+  membership.imr_interface = address.sin_addr;
   if (::setsockopt(socket_, IPPROTO_IP, IP_ADD_MEMBERSHIP, &membership, sizeof membership) != 0) {
     warning_ = "cannot join DGPS multicast group " + group + " (" + std::strerror(errno) +
                "): only corrections sent to UDP port " + std::to_string(port) + " directly are relayed";

@@ -1,7 +1,7 @@
 #pragma once
 // RTCM-104 corrections for the receiver, heard on UDP (garminnmea.md §2.1):
-// a socket bound to the port on every address, joined to the multicast
-// group when the host has a route for it. Each datagram is written to the
+// a socket bound to the port on one local address (every one by default),
+// joined to the multicast group on that address's interface when it can be. Each datagram is written to the
 // receiver byte for byte.
 
 #include <cstdint>
@@ -15,7 +15,7 @@ class DgpsRelay {
   // Throws std::runtime_error when the port cannot be bound. A failed
   // multicast join is not an error (a container has no route): `warning()`
   // says so, and datagrams sent to the port directly still arrive.
-  DgpsRelay(const std::string& group, int port);
+  DgpsRelay(const std::string& group, int port, const std::string& bind_address = "0.0.0.0");
   ~DgpsRelay();
   DgpsRelay(const DgpsRelay&) = delete;
   DgpsRelay& operator=(const DgpsRelay&) = delete;

@@ -144,7 +144,8 @@ class GarminNmeaDriver final : public hardware_driver::SerialDeviceDriver {
   // --- corrections -> receiver
   void start_dgps() {
     try {
-      dgps_ = std::make_unique<garminnmea::DgpsRelay>(settings_.dgps_group, settings_.dgps_port);
+      dgps_ = std::make_unique<garminnmea::DgpsRelay>(settings_.dgps_group, settings_.dgps_port,
+                                                       settings_.dgps_bind);
       if (!dgps_->warning().empty()) device().logger().warning(device().name() + ": " + dgps_->warning());
     } catch (const std::runtime_error& e) {
       // 1.5 refused to start; a receiver without corrections still gives fixes.

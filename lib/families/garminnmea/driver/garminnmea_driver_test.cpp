@@ -215,7 +215,9 @@ struct GarminNmeaLogTest : GarminNmeaDriverTest {
       ASSERT_TRUE(match) << name << ": no fix at " << theirs.time_of_day.value_or(-1);
       EXPECT_LE(std::abs(match->latitude - wire_angle(theirs.latitude)), 1);
       EXPECT_LE(std::abs(match->longitude - wire_angle(theirs.longitude)), 1);
-      if (theirs.altitude && theirs.time_of_day) EXPECT_NEAR(match->altitude, *theirs.altitude * 1000, 10);
+      if (theirs.altitude && theirs.time_of_day) {
+        EXPECT_NEAR(match->altitude, *theirs.altitude * 1000, 10);
+      }
       EXPECT_EQ(match->quality, 1);
       EXPECT_EQ(match->time_usec, 0u);
     }
@@ -340,7 +342,8 @@ int free_udp_port() {
 
 TEST_F(GarminNmeaDriverTest, RelaysCorrectionsHeardOnUdpToTheReceiver) {
   const int port = free_udp_port();
-  start("dgps_enable 1 dgps_port " + std::to_string(port));
+  // Bound and joined on loopback: the test's traffic stays on this host.
+  start("dgps_enable 1 dgps_bind \"127.0.0.1\" dgps_port " + std::to_string(port));
   const std::vector<std::uint8_t> rtcm{0x66, 0x40, 0x7f, 0x01, 0x02};
   const int sender = ::socket(AF_INET, SOCK_DGRAM, 0);
   sockaddr_in to{};

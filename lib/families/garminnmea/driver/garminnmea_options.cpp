@@ -17,6 +17,8 @@ const core::OptionSchema& garminnmea_option_schema() {
           .doc("1: relay RTCM-104 corrections heard on UDP to the receiver (no multicast route: a warning, no relay)"),
       core::OptionSpec::text("dgps_group", "225.0.0.43").doc("the multicast group the corrections come on"),
       core::OptionSpec::integer("dgps_port", 7778, 1, 65535).doc("the UDP port the corrections come to"),
+      core::OptionSpec::text("dgps_bind", "0.0.0.0")
+          .doc("the local IPv4 address to listen on and join the group on; 127.0.0.1 keeps it on this host"),
   };
   return schema;
 }
@@ -29,6 +31,11 @@ GarminNmeaSettings read_garminnmea_settings(const config::Section& section) {
   settings.dgps_enable = options.integer("dgps_enable") != 0;
   settings.dgps_group = options.text("dgps_group");
   settings.dgps_port = static_cast<int>(options.integer("dgps_port"));
+  settings.dgps_bind = options.text("dgps_bind");
+  in_addr bind_address{};
+  if (inet_pton(AF_INET, settings.dgps_bind.c_str(), &bind_address) != 1) {
+    options.fail({"dgps_bind"}, "must be an IPv4 address, not '" + settings.dgps_bind + "'");
+  }
   in_addr group{};
   if (inet_pton(AF_INET, settings.dgps_group.c_str(), &group) != 1 || (ntohl(group.s_addr) >> 28) != 0xE) {
     options.fail({"dgps_group"}, "must be an IPv4 multicast address (224.0.0.0 to 239.255.255.255), not '" +

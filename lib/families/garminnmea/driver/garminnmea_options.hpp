@@ -15,6 +15,7 @@ struct GarminNmeaSettings {
   bool dgps_enable = true;  // 1.5's default
   std::string dgps_group = "225.0.0.43";
   int dgps_port = 7778;
+  std::string dgps_bind = "0.0.0.0";  // where to listen and join
 };
 
 [[nodiscard]] const core::OptionSchema& garminnmea_option_schema();
