@@ -95,3 +95,17 @@ check_refuses_bad_ports() {
 @test "--check refuses a p2os port that is no tty path or tcp:HOST:PORT, at its value" {
   check_refuses_bad_ports position p2os_position 42
 }
+
+@test "every bundled configuration passes --check as the demo checks it (a world's with its world)" {
+  # Replays need their log and map (the first test checks post-hoc-localization.cfg with them).
+  for cfg in "$repo_root"/data/config/*.cfg; do
+    grep -q '"readlog"' "$cfg" && continue
+    world=$(sed -n 's/^#.*player-serve -s \([^ ]*\) .*/\1/p' "$cfg" | head -n 1)
+    if [ -n "$world" ]; then
+      run "$player_serve" --check -s "$repo_root/$world" "$cfg"
+    else
+      run "$player_serve" --check "$cfg"
+    fi
+    [ "$status" -eq 0 ] || { echo "$cfg: $output"; return 1; }
+  done
+}
