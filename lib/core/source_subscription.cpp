@@ -3,7 +3,25 @@
 #include <string>
 #include <utility>
 
+#include "protocol/interfaces.hpp"
+
 namespace playerkit::core {
+
+Device& source_device(const DeviceTable& devices, const Device& self, std::uint16_t interface, int index,
+                      std::string_view option, std::string_view purpose) {
+  const DeviceKey key{self.key().port, {interface, static_cast<std::uint16_t>(index)}};
+  const std::string what = protocol::interface_name(interface);
+  if (key == self.key()) {
+    throw DriverError(self.name() + ": " + std::string(option) + " " + std::to_string(index) +
+                      " is this device itself; name the " + what + " to " + std::string(purpose));
+  }
+  Device* found = devices.find(key);
+  if (found == nullptr) {
+    throw DriverError(self.name() + ": no " + what + ":" + std::to_string(index) + " on port " +
+                      std::to_string(key.port) + " to " + std::string(purpose));
+  }
+  return *found;
+}
 
 SourceSubscription::SourceSubscription(Device& source, DeviceListener* listener,
                                        std::string_view owner) {

@@ -5,11 +5,20 @@
 // undoes the ones already taken, because they are plain members or vector
 // elements that go out of scope.
 
+#include <cstdint>
 #include <string_view>
 
 #include "core/device.hpp"
+#include "core/device_table.hpp"
 
 namespace playerkit::core {
+
+// The device a driver is built on: `interface`:`index` on the port of the
+// driver's own device `self`, as 1.5's `*_index` options named it. Throws
+// DriverError saying it is `self` itself ("<option> N is this device
+// itself") or missing ("no laser:2 on port 6665 to <purpose>").
+Device& source_device(const DeviceTable& devices, const Device& self, std::uint16_t interface, int index,
+                      std::string_view option, std::string_view purpose);
 
 class SourceSubscription {
  public:

@@ -69,7 +69,9 @@ class LaserCspaceDriver final : public core::ThreadedDriver, private core::Devic
 
   void check() override { (void)source_device(); }
 
-  [[nodiscard]] std::vector<core::DeviceKey> source_devices() const override { return {source_key()}; }
+  [[nodiscard]] std::vector<core::DeviceKey> source_devices() const override {
+    return {{device().key().port, {protocol::kLaserCode, static_cast<std::uint16_t>(options_.laser_index)}}};
+  }
 
   [[nodiscard]] std::vector<core::DriverCounter> counters() const override {
     return {{"scans_converted", converted_.load()}, {"scans_repeated", repeated_.load()}};
@@ -119,22 +121,8 @@ class LaserCspaceDriver final : public core::ThreadedDriver, private core::Devic
   }
 
  private:
-  core::DeviceKey source_key() const {
-    return {device().key().port, {protocol::kLaserCode, static_cast<std::uint16_t>(options_.laser_index)}};
-  }
-
   core::Device& source_device() const {
-    const core::DeviceKey key = source_key();
-    if (key == device().key()) {
-      throw core::DriverError(device().name() + ": laser " + std::to_string(options_.laser_index) +
-                              " is this device itself; name the laser to read");
-    }
-    core::Device* source = devices_.find(key);
-    if (source == nullptr) {
-      throw core::DriverError(device().name() + ": no laser:" + std::to_string(options_.laser_index) +
-                              " on port " + std::to_string(key.port) + " to read");
-    }
-    return *source;
+    return core::source_device(devices_, device(), protocol::kLaserCode, options_.laser_index, "laser", "read");
   }
 
   // On the source's thread: hand the scan over and wake ours.

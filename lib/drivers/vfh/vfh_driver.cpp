@@ -58,8 +58,8 @@ class VfhDriver final : public core::ThreadedDriver, private core::DeviceListene
   }
 
   void check() override {
-    (void)source(protocol::kPositionCode, options_.position_index);
-    (void)source(protocol::kLaserCode, options_.laser_index);
+    (void)driven_base();
+    (void)steering_laser();
   }
 
   [[nodiscard]] std::vector<core::DeviceKey> source_devices() const override {
@@ -82,8 +82,8 @@ class VfhDriver final : public core::ThreadedDriver, private core::DeviceListene
 
  protected:
   void open() override {
-    core::Device& base = source(protocol::kPositionCode, options_.position_index);
-    core::Device& laser = source(protocol::kLaserCode, options_.laser_index);
+    core::Device& base = driven_base();
+    core::Device& laser = steering_laser();
     {
       std::lock_guard lock(mutex_);
       odometry_.reset();
@@ -126,22 +126,18 @@ class VfhDriver final : public core::ThreadedDriver, private core::DeviceListene
   }
 
  private:
-  core::DeviceKey key_of(std::uint16_t interface, int index) const {
-    return {device().key().port, {interface, static_cast<std::uint16_t>(index)}};
+  core::Device& driven_base() const {
+    return core::source_device(devices_, device(), protocol::kPositionCode, options_.position_index, "position_index",
+                               "drive");
   }
 
-  core::Device& source(std::uint16_t interface, int index) const {
-    const core::DeviceKey key = key_of(interface, index);
-    if (key == device().key()) {
-      throw core::DriverError(device().name() + ": position_index " + std::to_string(index) +
-                              " is this device itself; name the position device to drive");
-    }
-    core::Device* found = devices_.find(key);
-    if (found == nullptr) {
-      throw core::DriverError(device().name() + ": no " + protocol::interface_name(interface) + ":" +
-                              std::to_string(index) + " on port " + std::to_string(key.port) + " to use");
-    }
-    return *found;
+  core::Device& steering_laser() const {
+    return core::source_device(devices_, device(), protocol::kLaserCode, options_.laser_index, "laser_index",
+                               "steer by");
+  }
+
+  core::DeviceKey key_of(std::uint16_t interface, int index) const {
+    return {device().key().port, {interface, static_cast<std::uint16_t>(index)}};
   }
 
   // On the sources' threads: keep the newest and wake ours on odometry.

@@ -57,8 +57,8 @@ class WavefrontDriver final : public core::ThreadedDriver, private core::DeviceL
   }
 
   void check() override {
-    (void)source(protocol::kPositionCode, options_.position_index);
-    (void)source(protocol::kLocalizeCode, options_.localize_index);
+    (void)local_planner();
+    (void)localizer();
   }
 
   [[nodiscard]] std::vector<core::DeviceKey> source_devices() const override {
@@ -73,8 +73,8 @@ class WavefrontDriver final : public core::ThreadedDriver, private core::DeviceL
 
  protected:
   void open() override {
-    core::Device& base = source(protocol::kPositionCode, options_.position_index);
-    core::Device& localize = source(protocol::kLocalizeCode, options_.localize_index);
+    core::Device& base = local_planner();
+    core::Device& localize = localizer();
     {
       std::lock_guard lock(mutex_);
       odometry_.reset();
@@ -124,22 +124,18 @@ class WavefrontDriver final : public core::ThreadedDriver, private core::DeviceL
   }
 
  private:
-  core::DeviceKey key_of(std::uint16_t interface, int index) const {
-    return {device().key().port, {interface, static_cast<std::uint16_t>(index)}};
+  core::Device& local_planner() const {
+    return core::source_device(devices_, device(), protocol::kPositionCode, options_.position_index, "position_index",
+                               "drive");
   }
 
-  core::Device& source(std::uint16_t interface, int index) const {
-    const core::DeviceKey key = key_of(interface, index);
-    if (key == device().key()) {
-      throw core::DriverError(device().name() + ": position_index " + std::to_string(index) +
-                              " is this device itself; name the position device to drive (vfh)");
-    }
-    core::Device* found = devices_.find(key);
-    if (found == nullptr) {
-      throw core::DriverError(device().name() + ": no " + protocol::interface_name(interface) + ":" +
-                              std::to_string(index) + " on port " + std::to_string(key.port) + " to use");
-    }
-    return *found;
+  core::Device& localizer() const {
+    return core::source_device(devices_, device(), protocol::kLocalizeCode, options_.localize_index, "localize_index",
+                               "localize with");
+  }
+
+  core::DeviceKey key_of(std::uint16_t interface, int index) const {
+    return {device().key().port, {interface, static_cast<std::uint16_t>(index)}};
   }
 
   void data_published(const core::Device& from) override {
