@@ -1,10 +1,10 @@
 #include "families/p2os/p2os_emulator_kind.hpp"
 
 #include <chrono>
-#include <numbers>
 #include <optional>
 
 #include "emulators/emulator_option_reader.hpp"
+#include "emulators/mobile_base/robot_options.hpp"
 #include "families/p2os/emulator/p2os_robot_emulator.hpp"
 
 namespace playerkit::families {
@@ -20,17 +20,15 @@ std::unique_ptr<emulators::DeviceEmulator> make_robot(const emulators::EmulatorO
   emulators::P2osEmulatorOptions settings;
   settings.subclass = options.text("model", settings.subclass);
   settings.robot_name = options.text("name", settings.robot_name);
-  settings.initial_pose = options.pose("pose", {});
   settings.model_baud = options.integer("baud", 0, 0, 4000000);
   if (settings.model_baud != 0 && settings.model_baud != 9600 && settings.model_baud != 19200 &&
       settings.model_baud != 38400 && settings.model_baud != 57600 && settings.model_baud != 115200) {
     options.fail("baud", "a P2OS controller runs at 9600, 19200, 38400, 57600 or 115200 (0: any speed)");
   }
   settings.battery_volts = options.number("battery", settings.battery_volts, 0.0, 25.5);
-  settings.odometry_error.translation_scale = options.number("odometry_scale", 0.0, -0.5, 0.5);
-  settings.odometry_error.rotation_scale = options.number("rotation_scale", 0.0, -0.5, 0.5);
-  settings.odometry_error.heading_drift_per_metre = options.number("drift", 0.0, -90.0, 90.0) * std::numbers::pi / 180.0;
-  settings.odometry_error.seed = static_cast<std::uint64_t>(options.integer("seed", 1, 0, 2147483647));
+  const emulators::mobile_base::RobotBodyOptions body = emulators::mobile_base::read_robot_options(options);
+  settings.initial_pose = body.initial_pose;
+  settings.odometry_error = body.odometry_error;
   settings.sonar_max_range = options.number("sonar_range", settings.sonar_max_range, 0.1, 50.0);
   const double watchdog = options.number("watchdog", 2.0, 0.0, 3600.0);
   settings.watchdog = watchdog > 0.0 ? std::optional<emulators::Duration>(from_seconds(watchdog)) : std::nullopt;
@@ -39,6 +37,25 @@ std::unique_ptr<emulators::DeviceEmulator> make_robot(const emulators::EmulatorO
   settings.has_cmucam = options.flag("cmucam", true);
   settings.map = world.map;
   return std::make_unique<emulators::P2osRobotEmulator>(settings);
+}
+
+std::vector<emulators::EmulatorOptionDoc> robot_options() {
+  std::vector<emulators::EmulatorOptionDoc> docs{
+      {"model", "p3dx", "the robot it claims to be: a subclass of the P2OS table (p3dx, p3at, p2de, amigo, ...)"},
+      {"name", "playerkit", "the robot's name in the SYNC2 reply (at most 19 characters)"},
+  };
+  for (auto& shared : emulators::mobile_base::robot_option_docs()) docs.push_back(std::move(shared));
+  const std::vector<emulators::EmulatorOptionDoc> pioneer{
+      {"baud", "0", "the only line speed it listens at (9600, 19200, 38400, 57600, 115200); 0: any"},
+      {"battery", "12.5", "battery voltage, V"},
+      {"sonar_range", "5", "longest sonar reading, m"},
+      {"watchdog", "2", "stop when no packet came for this long while moving, s; 0: off"},
+      {"sip_period", "100", "time between two SIPs, ms"},
+      {"gripper", "1", "1: it has a gripper"},
+      {"cmucam", "1", "1: a CMUcam answers on AUX2"},
+  };
+  docs.insert(docs.end(), pioneer.begin(), pioneer.end());
+  return docs;
 }
 
 }  // namespace
@@ -50,23 +67,7 @@ emulators::EmulatorKind p2os_emulator_kind() {
       .interface_name = "position",
       .driver = "p2os_position",
       .mount = emulators::EmulatorMount::robot,
-      .options =
-          {
-              {"model", "p3dx", "the robot it claims to be: a subclass of the P2OS table (p3dx, p3at, p2de, amigo, ...)"},
-              {"name", "playerkit", "the robot's name in the SYNC2 reply (at most 19 characters)"},
-              {"pose", "0,0,0", "where it starts in the map: x,y,yaw in m, m, deg"},
-              {"baud", "0", "the only line speed it listens at (9600, 19200, 38400, 57600, 115200); 0: any"},
-              {"battery", "12.5", "battery voltage, V"},
-              {"odometry_scale", "0", "odometry error: measured distance = true x (1 + this)"},
-              {"rotation_scale", "0", "odometry error: measured rotation = true x (1 + this)"},
-              {"drift", "0", "odometry error: heading drift, deg per m driven"},
-              {"seed", "1", "seed of the odometry noise"},
-              {"sonar_range", "5", "longest sonar reading, m"},
-              {"watchdog", "2", "stop when no packet came for this long while moving, s; 0: off"},
-              {"sip_period", "100", "time between two SIPs, ms"},
-              {"gripper", "1", "1: it has a gripper"},
-              {"cmucam", "1", "1: a CMUcam answers on AUX2"},
-          },
+      .options = robot_options(),
       .make = make_robot,
   };
 }

@@ -117,8 +117,8 @@ TEST(P2osFamily, BadOptionsAreRefusedByName) {
   EXPECT_EQ(refusal({{"gripper", "maybe"}}), "p2os: gripper=maybe: expected 1 or 0 (yes/no, on/off)");
   EXPECT_EQ(refusal({{"seed", "1"}, {"seed", "2"}}), "p2os: option 'seed' is given twice");
   EXPECT_EQ(refusal({{"type", "PLS"}}),
-            "p2os: no option 'type'; its options are model, name, pose, baud, battery, odometry_scale, rotation_scale, "
-            "drift, seed, sonar_range, watchdog, sip_period, gripper, cmucam");
+            "p2os: no option 'type'; its options are model, name, pose, odometry_scale, rotation_scale, drift, seed, "
+            "baud, battery, sonar_range, watchdog, sip_period, gripper, cmucam");
   // What only the emulator itself can check still names it.
   EXPECT_EQ(refusal({{"model", "p9zz"}}).substr(0, 6), "p2os: ");
 }

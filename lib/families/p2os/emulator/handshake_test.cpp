@@ -117,7 +117,7 @@ TEST(P2osHandshake, CloseStopsSipsAtOnceAndReturnsToUnconnected) {
   host.send(command::close);
   EXPECT_FALSE(robot.connected());
   EXPECT_FALSE(robot.motors_enabled());
-  EXPECT_EQ(robot.wheel_velocities(), (p2os::WheelVelocities{0.0, 0.0}));
+  EXPECT_EQ(robot.wheel_velocities(), (mobile_base::WheelVelocities{0.0, 0.0}));
   const geometry::Pose2 stopped = robot.true_pose();
   host.wait(2s);
   EXPECT_TRUE(host.take_frames().empty());

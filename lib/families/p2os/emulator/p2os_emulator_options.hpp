@@ -5,6 +5,7 @@
 #include "algorithms/geometry/pose2.hpp"
 #include "algorithms/grid/occupancy_grid.hpp"
 #include "emulators/device_emulator.hpp"
+#include "emulators/mobile_base/odometry_error.hpp"
 #include "families/p2os/protocol/aux_serial.hpp"
 
 #include <chrono>
@@ -14,25 +15,13 @@
 
 namespace playerkit::emulators {
 
-// Systematic and random odometry error, applied to each motion step as the
-// robot's encoders would see it. Seeded: the same options and the same
-// calls give the same odometry.
-struct P2osOdometryError {
-  double translation_scale = 0.0;      // measured distance = true × (1 + this)
-  double rotation_scale = 0.0;         // measured rotation = true × (1 + this)
-  double heading_drift_per_metre = 0.0;  // rad of heading error per metre driven
-  double translation_noise = 0.0;      // standard deviation, m per √m driven
-  double rotation_noise = 0.0;         // standard deviation, rad per √m driven
-  std::uint64_t seed = 1;
-};
-
 struct P2osEmulatorOptions {
   // A subclass of the parameter table (families/p2os/protocol/robot_params.hpp), any
   // case; its row gives the SYNC2 strings, conversions and sonar ring.
   std::string subclass = "p3dx";
   std::string robot_name = "playerkit";  // at most 19 characters
   geometry::Pose2 initial_pose{};        // world frame, metres and radians
-  P2osOdometryError odometry_error{};
+  mobile_base::OdometryError odometry_error{};
   double battery_volts = 12.5;
   // The world: sonars are ray-cast in it and the robot stalls against its
   // occupied cells. Not owned; may be null (open space).

@@ -73,7 +73,7 @@ P2osEmulatorOptions validated(P2osEmulatorOptions options) {
   return options;
 }
 
-p2os::DriveGeometry geometry_for(const hw::RobotParams& row, const P2osEmulatorOptions& options) {
+mobile_base::DriveGeometry geometry_for(const hw::RobotParams& row, const P2osEmulatorOptions& options) {
   return {.wheelbase = row.wheelbase() / 1000.0,
           .footprint_radius = options.footprint_radius.value_or(row.radius / 1000.0),
           .max_speed = std::min(row.max_velocity / 1000.0, kMaxStepPerSip / seconds(options.sip_period)),
@@ -401,7 +401,7 @@ std::vector<Telegram> P2osRobotEmulator::take_output() {
 hw::StandardSip P2osRobotEmulator::build_sip() {
   hw::StandardSip sip;
   const geometry::Pose2& odometry = drive_.odometry();
-  const p2os::WheelVelocities wheels = drive_.wheels();
+  const mobile_base::WheelVelocities wheels = drive_.wheels();
   sip.x_position = p2os::position_units(odometry.x, params_);
   sip.y_position = p2os::position_units(odometry.y, params_);
   sip.heading = p2os::heading_units(odometry.yaw, params_);
@@ -412,7 +412,7 @@ hw::StandardSip P2osRobotEmulator::build_sip() {
   sip.battery = static_cast<std::uint8_t>(std::clamp(std::lround(options_.battery_volts * 10.0), 0L, 255L));
 
   std::uint8_t front = 0, rear = 0;
-  const p2os::Contact contact = drive_.take_contact();
+  const mobile_base::Contact contact = drive_.take_contact();
   const bool has_bumpers = params_.extra && params_.extra->num_front_bumpers > 0;
   if (contact.stalled && has_bumpers) press_bumper(contact.bearing, front, rear);
   sip.stall_bumpers_low = hw::stall_bumper_byte(contact.stalled, rear);
@@ -448,7 +448,7 @@ void P2osRobotEmulator::send_sip() {
 }
 
 void P2osRobotEmulator::send_gyro_packet() {
-  const p2os::WheelVelocities wheels = drive_.wheels();
+  const mobile_base::WheelVelocities wheels = drive_.wheels();
   const double turn_rate = (wheels.right - wheels.left) / (params_.wheelbase() / 1000.0);
   const double scaler = params_.extra && params_.extra->gyro_scaler > 0.0
                             ? params_.extra->gyro_scaler

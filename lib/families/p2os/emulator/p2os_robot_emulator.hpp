@@ -8,7 +8,7 @@
 
 #include "algorithms/geometry/pose2.hpp"
 #include "emulators/device_emulator.hpp"
-#include "families/p2os/emulator/differential_drive.hpp"
+#include "emulators/mobile_base/differential_drive.hpp"
 #include "families/p2os/emulator/gripper_model.hpp"
 #include "families/p2os/emulator/p2os_emulator_options.hpp"
 #include "families/p2os/emulator/sonar_array.hpp"
@@ -66,7 +66,7 @@ class P2osRobotEmulator final : public DeviceEmulator {
   // 12-bit wrap); zeroed by OPEN and SETO.
   geometry::Pose2 odometry_pose() const { return drive_.odometry(); }
   void set_true_pose(const geometry::Pose2& pose);
-  p2os::WheelVelocities wheel_velocities() const { return drive_.wheels(); }
+  mobile_base::WheelVelocities wheel_velocities() const { return drive_.wheels(); }
 
   P2osLinkState link_state() const { return state_; }
   bool connected() const { return state_ == P2osLinkState::connected; }
@@ -112,7 +112,7 @@ class P2osRobotEmulator final : public DeviceEmulator {
   P2osEmulatorOptions options_;
   const hardware::p2os::RobotParams& params_;
   hardware::p2os::P2osFrameFormat format_;
-  p2os::DifferentialDrive drive_;
+  mobile_base::DifferentialDrive drive_;
   p2os::GripperModel gripper_;
   p2os::SonarArray sonar_;
 

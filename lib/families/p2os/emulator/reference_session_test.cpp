@@ -166,7 +166,7 @@ TEST(P2osReferenceSession, ShutdownStopsTheRobotAndTheNextStartUpWorks) {
   // §2.4 shutdown: STOP, 200 ms, CLOSE, 200 ms, close the port.
   ReferenceDriver& d = driver;
   d.transact(Command::plain(command::stop));
-  EXPECT_EQ(robot.wheel_velocities(), (p2os::WheelVelocities{0.0, 0.0}));
+  EXPECT_EQ(robot.wheel_velocities(), (mobile_base::WheelVelocities{0.0, 0.0}));
   d.sleep(200ms);
   robot.receive(hw::command_frame(Command::plain(command::close)), d.now(), 0);
   d.sleep(200ms);

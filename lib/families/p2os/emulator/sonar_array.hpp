@@ -4,6 +4,7 @@
 
 #include "algorithms/geometry/pose2.hpp"
 #include "algorithms/grid/occupancy_grid.hpp"
+#include "emulators/mobile_base/range_ring.hpp"
 #include "families/p2os/protocol/robot_params.hpp"
 
 #include <span>
@@ -24,13 +25,16 @@ class SonarArray {
   // Metres from transducer `index` to the first occupied cell along its
   // axis, or `max_range` (always, without a map).
   double range(int index, const grid::OccupancyGrid* map, const geometry::Pose2& robot,
-               double max_range) const;
+               double max_range) const {
+    return ring_.range(index, map, robot, max_range);
+  }
 
   // The transducer's pose in the world, metres and radians.
-  geometry::Pose2 world_pose(int index, const geometry::Pose2& robot) const;
+  geometry::Pose2 world_pose(int index, const geometry::Pose2& robot) const { return ring_.world_pose(index, robot); }
 
  private:
-  std::vector<hardware::p2os::SonarPose> poses_;
+  std::vector<hardware::p2os::SonarPose> poses_;  // as the row gives them: mm and whole degrees
+  mobile_base::RangeRing ring_;                    // the same in metres and radians
 };
 
 }  // namespace playerkit::emulators::p2os

@@ -72,7 +72,7 @@ TEST(P2osWorld, StallsAgainstAWallWithStallBitsAndAFrontBumper) {
   EXPECT_EQ(last.front_bumpers(), 0x04) << "the middle one of five";
   EXPECT_EQ(last.rear_bumpers(), 0);
   EXPECT_EQ(last.left_velocity, 0) << "stalled wheels do not turn";
-  EXPECT_EQ(d.robot.wheel_velocities(), (p2os::WheelVelocities{0.0, 0.0}));
+  EXPECT_EQ(d.robot.wheel_velocities(), (mobile_base::WheelVelocities{0.0, 0.0}));
 
   // Turning in place against the wall is possible; backing off too. (RVEL
   // alone would keep VEL's 300 mm/s: stop first.)

@@ -9,7 +9,7 @@
 
 #include <optional>
 
-namespace playerkit::emulators::p2os {
+namespace playerkit::emulators::mobile_base {
 
 struct NearestObstacle {
   double distance = 0.0;   // metres from the centre to the cell's nearest point
@@ -20,4 +20,4 @@ struct NearestObstacle {
 std::optional<NearestObstacle> nearest_obstacle(const grid::OccupancyGrid& map,
                                                 const Eigen::Vector2d& centre, double radius);
 
-}  // namespace playerkit::emulators::p2os
+}  // namespace playerkit::emulators::mobile_base

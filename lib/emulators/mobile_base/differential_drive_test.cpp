@@ -1,10 +1,10 @@
-#include "families/p2os/emulator/differential_drive.hpp"
+#include "emulators/mobile_base/differential_drive.hpp"
 
 #include <gtest/gtest.h>
 
 #include <numbers>
 
-namespace playerkit::emulators::p2os {
+namespace playerkit::emulators::mobile_base {
 namespace differential_drive_test {
 
 constexpr double kPi = std::numbers::pi;
@@ -54,7 +54,7 @@ TEST(DifferentialDrive, SetpointsAreClampedAndNonFiniteIsStop) {
 }
 
 TEST(DifferentialDrive, OdometryScalesAndDrift) {
-  P2osOdometryError error;
+  OdometryError error;
   error.translation_scale = -0.1;
   error.heading_drift_per_metre = 0.01;
   DifferentialDrive drive(kGeometry, error, nullptr, {2.0, 3.0, 1.0});
@@ -84,4 +84,4 @@ TEST(DifferentialDrive, ContactIsReportedOnceAndClearedOnTaking) {
 }
 
 }  // namespace differential_drive_test
-}  // namespace playerkit::emulators::p2os
+}  // namespace playerkit::emulators::mobile_base

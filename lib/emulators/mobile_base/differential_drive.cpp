@@ -1,12 +1,12 @@
-#include "families/p2os/emulator/differential_drive.hpp"
+#include "emulators/mobile_base/differential_drive.hpp"
 
-#include "families/p2os/emulator/obstacle_search.hpp"
+#include "emulators/mobile_base/obstacle_search.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace playerkit::emulators::p2os {
+namespace playerkit::emulators::mobile_base {
 
 geometry::Pose2 drive_arc(const geometry::Pose2& pose, double distance, double rotation) {
   geometry::Pose2 next = pose;
@@ -22,7 +22,7 @@ geometry::Pose2 drive_arc(const geometry::Pose2& pose, double distance, double r
   return next;
 }
 
-DifferentialDrive::DifferentialDrive(DriveGeometry geometry, const P2osOdometryError& error,
+DifferentialDrive::DifferentialDrive(DriveGeometry geometry, const OdometryError& error,
                                      const grid::OccupancyGrid* map,
                                      const geometry::Pose2& start)
     : geometry_(geometry), error_(error), map_(map), true_pose_(start), random_(error.seed) {}
@@ -105,4 +105,4 @@ void DifferentialDrive::step(double dt) {
   odometry_ = drive_arc(odometry_, measured_distance, measured_rotation);
 }
 
-}  // namespace playerkit::emulators::p2os
+}  // namespace playerkit::emulators::mobile_base

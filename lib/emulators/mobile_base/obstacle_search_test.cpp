@@ -1,8 +1,8 @@
-#include "families/p2os/emulator/obstacle_search.hpp"
+#include "emulators/mobile_base/obstacle_search.hpp"
 
 #include <gtest/gtest.h>
 
-namespace playerkit::emulators::p2os {
+namespace playerkit::emulators::mobile_base {
 namespace obstacle_search_test {
 
 TEST(NearestObstacle, DistanceToTheCellsNearestPoint) {
@@ -21,4 +21,4 @@ TEST(NearestObstacle, DistanceToTheCellsNearestPoint) {
 }
 
 }  // namespace obstacle_search_test
-}  // namespace playerkit::emulators::p2os
+}  // namespace playerkit::emulators::mobile_base

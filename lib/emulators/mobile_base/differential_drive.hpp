@@ -1,16 +1,18 @@
 #pragma once
 // A round differential-drive robot in an occupancy grid: velocity
 // setpoints, exact arc integration, stalling against occupied cells, and
-// odometry that sees each step through the configured error.
+// odometry that sees each step through the configured error. The body of
+// every emulated mobile base (a Pioneer, an RFLEX robot, a Khepera...); the
+// family's emulator adds its protocol, units and sensors.
 
 #include "algorithms/geometry/pose2.hpp"
 #include "algorithms/grid/occupancy_grid.hpp"
-#include "families/p2os/emulator/p2os_emulator_options.hpp"
+#include "emulators/mobile_base/odometry_error.hpp"
 
 #include <optional>
 #include <random>
 
-namespace playerkit::emulators::p2os {
+namespace playerkit::emulators::mobile_base {
 
 struct WheelVelocities {
   double left = 0.0;   // m/s
@@ -33,7 +35,7 @@ struct Contact {
 
 class DifferentialDrive {
  public:
-  DifferentialDrive(DriveGeometry geometry, const P2osOdometryError& error,
+  DifferentialDrive(DriveGeometry geometry, const OdometryError& error,
                     const grid::OccupancyGrid* map, const geometry::Pose2& start);
 
   // Setpoints, clamped to the limits.
@@ -50,6 +52,8 @@ class DifferentialDrive {
   const geometry::Pose2& true_pose() const { return true_pose_; }
   void set_true_pose(const geometry::Pose2& pose) { true_pose_ = pose; }
   const geometry::Pose2& odometry() const { return odometry_; }
+  // Controllers that take an odometry origin (set-odometry commands).
+  void set_odometry(const geometry::Pose2& pose) { odometry_ = pose; }
   void reset_odometry() { odometry_ = {}; }
 
   // The wheels as they turned in the last step: no forward motion while
@@ -62,7 +66,7 @@ class DifferentialDrive {
   bool blocked(const geometry::Pose2& from, const geometry::Pose2& to, double* bearing) const;
 
   DriveGeometry geometry_;
-  P2osOdometryError error_;
+  OdometryError error_;
   const grid::OccupancyGrid* map_;
   geometry::Pose2 true_pose_;
   geometry::Pose2 odometry_;
@@ -77,4 +81,4 @@ class DifferentialDrive {
 // turns by `rotation` (exact for constant wheel speeds).
 geometry::Pose2 drive_arc(const geometry::Pose2& pose, double distance, double rotation);
 
-}  // namespace playerkit::emulators::p2os
+}  // namespace playerkit::emulators::mobile_base

@@ -1,9 +1,9 @@
-#include "families/p2os/emulator/obstacle_search.hpp"
+#include "emulators/mobile_base/obstacle_search.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace playerkit::emulators::p2os {
+namespace playerkit::emulators::mobile_base {
 
 std::optional<NearestObstacle> nearest_obstacle(const grid::OccupancyGrid& map,
                                                 const Eigen::Vector2d& centre, double radius) {
@@ -29,4 +29,4 @@ std::optional<NearestObstacle> nearest_obstacle(const grid::OccupancyGrid& map,
   return best;
 }
 
-}  // namespace playerkit::emulators::p2os
+}  // namespace playerkit::emulators::mobile_base
