@@ -26,6 +26,7 @@
 #include "protocol/interfaces.hpp"
 #include "protocol/messages/gps.hpp"
 #include "protocol/messages/position.hpp"
+#include "square_drive.hpp"
 #include "test_server.hpp"
 
 namespace playerkit {
@@ -78,34 +79,6 @@ struct PioneerWithGps {
   }
 };
 
-struct Readings {
-  std::optional<client::PositionState> odometry;
-  std::vector<protocol::GpsData> fixes;
-  void take(const protocol::Message& message) {
-    if (message.type() != protocol::MessageType::kData) return;
-    if (message.device() == kPosition) {
-      odometry = client::to_si(protocol::decode<protocol::PositionData>(message.payload));
-    }
-    if (message.device() == kGps) fixes.push_back(protocol::decode<protocol::GpsData>(message.payload));
-  }
-};
-
-void command(client::Client& client, double speed, double turn_rate) {
-  client::PositionCommand wanted;
-  wanted.velocity = {speed, 0.0, turn_rate};
-  client.write_command(kPosition, protocol::encode(client::to_wire(wanted)));
-}
-
-template <class Done>
-bool read_until(client::Client& client, Readings& readings, Done done, std::chrono::seconds limit) {
-  const auto until = std::chrono::steady_clock::now() + limit;
-  while (std::chrono::steady_clock::now() < until) {
-    if (auto message = client.read(100ms)) readings.take(*message);
-    if (readings.odometry && done(*readings.odometry)) return true;
-  }
-  return false;
-}
-
 TEST(GpsSquare, TheGpsOfARobotDrivingASquareTracesItInUtm) {
   PioneerWithGps hardware;
   testing::TestServer server("position:0 ( driver \"p2os_position\" port \"" + hardware.robot.device_path() + "\" )\n"
@@ -116,41 +89,23 @@ TEST(GpsSquare, TheGpsOfARobotDrivingASquareTracesItInUtm) {
   client.set_timeout(15s);
   ASSERT_EQ(client.request_access(kPosition, protocol::Access::kAll).access, protocol::Access::kAll);
   ASSERT_EQ(client.request_access(kGps, protocol::Access::kRead).access, protocol::Access::kRead);
-  const auto power = protocol::encode(protocol::PositionPowerConfig{protocol::kPositionMotorPowerReq, 1});
-  ASSERT_EQ(client.request(kPosition, power).type(), protocol::MessageType::kAck);
-
-  Readings readings;
-  ASSERT_TRUE(read_until(client, readings, [](const auto&) { return true; }, 10s)) << "no odometry";
-  for (int side = 0; side < 4; ++side) {
-    const auto from = *readings.odometry;
-    ASSERT_TRUE(read_until(client, readings, [&](const client::PositionState& now) {
-      const double left = 1.0 - std::hypot(now.pose.x - from.pose.x, now.pose.y - from.pose.y);
-      command(client, std::clamp(1.5 * left, 0.05, 0.5), 0.0);
-      return left <= 0.005;
-    }, 15s)) << "side " << side;
-    command(client, 0.0, 0.0);
-    const double heading = readings.odometry->pose.yaw;
-    ASSERT_TRUE(read_until(client, readings, [&](const client::PositionState& now) {
-      const double left = std::numbers::pi / 2 - geometry::angle_difference(now.pose.yaw, heading);
-      command(client, 0.0, std::clamp(2.0 * left, 0.1, 1.2));
-      return left <= 0.01;
-    }, 15s)) << "turn " << side;
-    command(client, 0.0, 0.0);
-  }
-  const auto settle = std::chrono::steady_clock::now() + 500ms;
-  while (std::chrono::steady_clock::now() < settle) {
-    if (auto message = client.read(50ms)) readings.take(*message);
-  }
+  std::vector<protocol::GpsData> fixes;
+  const hardware_test::SquareDrive drive = hardware_test::drive_square(client, {}, [&](const protocol::Message& message) {
+    if (message.type() == protocol::MessageType::kData && message.device() == kGps) {
+      fixes.push_back(protocol::decode<protocol::GpsData>(message.payload));
+    }
+  });
+  ASSERT_TRUE(drive.finished) << drive.failure;
 
   // Every fix the client read is where the robot was when the receiver made
   // it: UTM metres of the origin's zone are the map's metres.
   const auto origin = hardware::garminnmea::to_utm(kOriginLatitude, kOriginLongitude);
   ASSERT_EQ(origin.zone, 59);
   ASSERT_FALSE(origin.north);
-  ASSERT_GT(readings.fixes.size(), 50u);
+  ASSERT_GT(fixes.size(), 50u);
   double min_east = 1e9, max_east = -1e9, min_north = 1e9, max_north = -1e9;
   std::size_t checked = 0;
-  for (const protocol::GpsData& fix : readings.fixes) {
+  for (const protocol::GpsData& fix : fixes) {
     ASSERT_EQ(fix.quality, 1);
     const double since_first = static_cast<double>(static_cast<std::int64_t>(fix.time_sec) - kFirstFix) +
                                fix.time_usec / 1e6;
@@ -173,7 +128,7 @@ TEST(GpsSquare, TheGpsOfARobotDrivingASquareTracesItInUtm) {
   EXPECT_NEAR(max_east, 1.0, 0.1);
   EXPECT_NEAR(min_north, 0.0, 0.05);
   EXPECT_NEAR(max_north, 1.0, 0.1);
-  const protocol::GpsData& last = readings.fixes.back();
+  const protocol::GpsData& last = fixes.back();
   EXPECT_NEAR(last.utm_e / 100.0 - origin.easting, 0.0, 0.1);
   EXPECT_NEAR(last.utm_n / 100.0 - origin.northing, 0.0, 0.1);
 }

@@ -25,6 +25,7 @@
 #include "protocol/interfaces.hpp"
 #include "protocol/messages/laser.hpp"
 #include "protocol/messages/position.hpp"
+#include "square_drive.hpp"
 #include "test_server.hpp"
 
 namespace playerkit {
@@ -82,43 +83,6 @@ struct PioneerWithLaser {
   }
 };
 
-// The latest odometry and scan a client has read.
-struct Readings {
-  std::optional<client::PositionState> odometry;
-  std::optional<protocol::LaserData> scan;
-  int scans = 0;
-
-  void take(const protocol::Message& message) {
-    if (message.type() != protocol::MessageType::kData) return;
-    const protocol::DeviceAddress from = message.device();
-    if (from == kPosition) odometry = client::to_si(protocol::decode<protocol::PositionData>(message.payload));
-    if (from == kLaser) {
-      scan = protocol::decode<protocol::LaserData>(message.payload);
-      ++scans;
-    }
-  }
-};
-
-void command(client::Client& client, double speed, double turn_rate) {
-  client::PositionCommand wanted;
-  wanted.velocity = {speed, 0.0, turn_rate};
-  const auto wire = protocol::encode(client::to_wire(wanted));
-  client.write_command(kPosition, wire);
-}
-
-// Reads until `done` says so or `limit` passes; false on time out.
-template <class Done>
-bool read_until(client::Client& client, Readings& readings, Done done, std::chrono::seconds limit) {
-  const auto until = std::chrono::steady_clock::now() + limit;
-  while (std::chrono::steady_clock::now() < until) {
-    if (auto message = client.read(100ms)) readings.take(*message);
-    if (readings.odometry && done(*readings.odometry)) return true;
-  }
-  return false;
-}
-
-double heading_change(double from, double to) { return geometry::angle_difference(to, from); }
-
 TEST(PioneerSquare, AClientDrivesTheEmulatedRobotAroundASquareThroughTheServer) {
   PioneerWithLaser hardware;
   // The manual's configuration (section 7.3), ports pointing at the emulators.
@@ -131,34 +95,18 @@ TEST(PioneerSquare, AClientDrivesTheEmulatedRobotAroundASquareThroughTheServer) 
   client.set_timeout(10s);
   ASSERT_EQ(client.request_access(kPosition, protocol::Access::kAll).access, protocol::Access::kAll);
   ASSERT_EQ(client.request_access(kLaser, protocol::Access::kRead).access, protocol::Access::kRead);
-  // Motors start disabled (manual 7.30): switch them on.
-  const auto power = protocol::encode(protocol::PositionPowerConfig{protocol::kPositionMotorPowerReq, 1});
-  ASSERT_EQ(client.request(kPosition, power).type(), protocol::MessageType::kAck);
-
-  Readings readings;
-  ASSERT_TRUE(read_until(client, readings, [](const auto&) { return true; }, 10s)) << "no odometry";
   const geometry::Pose2 start = hardware.true_pose();
-
-  // Four sides of 1 m, each followed by a quarter turn left, closed on
-  // odometry with a proportional slow-down, as a client program would.
-  for (int side = 0; side < 4; ++side) {
-    const auto from = *readings.odometry;
-    ASSERT_TRUE(read_until(client, readings, [&](const client::PositionState& now) {
-      const double left = 1.0 - std::hypot(now.pose.x - from.pose.x, now.pose.y - from.pose.y);
-      command(client, std::clamp(1.5 * left, 0.05, 0.7), 0.0);
-      return left <= 0.005;
-    }, 15s)) << "side " << side;
-    command(client, 0.0, 0.0);
-    const double heading = readings.odometry->pose.yaw;
-    ASSERT_TRUE(read_until(client, readings, [&](const client::PositionState& now) {
-      const double left = std::numbers::pi / 2 - heading_change(heading, now.pose.yaw);
-      command(client, 0.0, std::clamp(2.0 * left, 0.1, 1.2));
-      return left <= 0.01;
-    }, 15s)) << "turn " << side;
-    command(client, 0.0, 0.0);
-  }
-  std::this_thread::sleep_for(300ms);
-  while (auto message = client.read(10ms)) readings.take(*message);
+  // Motors start disabled (manual 7.30): drive_square switches them on.
+  int scans = 0;
+  std::optional<protocol::LaserData> scan_read;
+  const hardware_test::SquareDrive drive =
+      hardware_test::drive_square(client, {.top_speed = 0.7}, [&](const protocol::Message& message) {
+        if (message.type() == protocol::MessageType::kData && message.device() == kLaser) {
+          scan_read = protocol::decode<protocol::LaserData>(message.payload);
+          ++scans;
+        }
+      });
+  ASSERT_TRUE(drive.finished) << drive.failure;
 
   // Back where it started, within what closing each leg on 10 Hz odometry
   // allows: whole degrees on the wire, and each stop comes one odometry
@@ -174,8 +122,8 @@ TEST(PioneerSquare, AClientDrivesTheEmulatedRobotAroundASquareThroughTheServer) 
   // The client's odometry is the robot's motion (no odometry error is
   // configured): it ends where the true pose ends, up to the wire's 1 mm and
   // whole degrees.
-  ASSERT_TRUE(readings.odometry);
-  const auto& odometry = readings.odometry->pose;
+  ASSERT_TRUE(drive.odometry);
+  const auto& odometry = drive.odometry->pose;
   const geometry::Pose2 moved = start.inverse().compose(end);
   EXPECT_NEAR(odometry.x, moved.x, 0.01);
   EXPECT_NEAR(odometry.y, moved.y, 0.01);
@@ -183,9 +131,9 @@ TEST(PioneerSquare, AClientDrivesTheEmulatedRobotAroundASquareThroughTheServer) 
 
   // Scans arrived all along, and they see the room: the beam straight ahead
   // reads the distance from the laser to the wall it faces.
-  EXPECT_GT(readings.scans, 10);
-  ASSERT_TRUE(readings.scan);
-  const auto scan = client::to_si(*readings.scan);
+  EXPECT_GT(scans, 10);
+  ASSERT_TRUE(scan_read);
+  const auto scan = client::to_si(*scan_read);
   ASSERT_EQ(scan.ranges.size(), 361u);
   const geometry::Pose2 laser_pose = end.compose({kLaserForward, 0.0, 0.0});
   const double ahead = scan.ranges[180];
