@@ -21,6 +21,9 @@ class RmpOdometry {
   const OdometryPose& update(std::uint32_t fore_aft, std::uint32_t yaw);
   // Back to (0, 0, 0); the next counters are the new origin.
   void reset();
+  // The pose kept, the next counters taken as the origin (a robot found
+  // again may have restarted them).
+  void forget_counters() { last_.reset(); }
   [[nodiscard]] const OdometryPose& pose() const { return pose_; }
 
  private:
