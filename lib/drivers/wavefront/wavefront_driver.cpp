@@ -1,9 +1,7 @@
 #include "drivers/wavefront/wavefront_driver.hpp"
 
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <memory>
 #include <mutex>
 #include <numbers>
@@ -14,8 +12,7 @@
 #include <vector>
 
 #include "algorithms/geometry/pose2.hpp"
-#include "algorithms/wavefront/wavefront_planner.hpp"
-#include "algorithms/wavefront/waypoint_follower.hpp"
+#include "algorithms/wavefront/wavefront_navigator.hpp"
 #include "core/device.hpp"
 #include "core/device_table.hpp"
 #include "core/driver.hpp"
@@ -36,20 +33,20 @@ using wavefront_driver::WavefrontOptions;
 
 constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
 constexpr core::ClientId kWavefrontAsClient = core::kFirstDriverClient - 2;
-// A new goal differs from the last by more than these (1.5's test).
-constexpr double kSameGoalDistance = 0.001;  // m
-constexpr double kSameGoalAngle = 0.001;     // rad
-// Plans made for one goal before it is given up (the robot keeps straying,
-// the local planner keeps getting stuck).
-constexpr int kMostPlansPerGoal = 10;
+
+wavefront::NavigatorSettings navigator_settings(const WavefrontOptions& options) {
+  wavefront::NavigatorSettings settings;
+  settings.follower = options.follower;
+  settings.jump_distance = options.jump_distance;
+  return settings;
+}
 
 class WavefrontDriver final : public core::ThreadedDriver, private core::DeviceListener {
  public:
   WavefrontDriver(WavefrontOptions options, core::DeviceTable& devices)
       : options_(std::move(options)),
         devices_(devices),
-        planner_(*options_.map, options_.planner),
-        follower_(options_.follower) {}
+        navigator_(*options_.map, options_.planner, navigator_settings(options_)) {}
 
   ~WavefrontDriver() override {
     localize_subscription_.reset();
@@ -67,8 +64,8 @@ class WavefrontDriver final : public core::ThreadedDriver, private core::DeviceL
   }
 
   [[nodiscard]] std::vector<core::DriverCounter> counters() const override {
-    return {{"goals_reached", reached_.load()}, {"goals_refused", refused_.load()}, {"plans", plans_.load()},
-            {"replans", replans_.load()}};
+    std::lock_guard lock(counters_mutex_);
+    return counters_;
   }
 
  protected:
@@ -81,11 +78,7 @@ class WavefrontDriver final : public core::ThreadedDriver, private core::DeviceL
       localized_.reset();
     }
     base_ = &base;
-    goal_.reset();
-    pending_goal_.reset();
-    last_map_pose_.reset();
-    follower_.clear();
-    driving_ = false;
+    navigator_.reset();
     device().set_wakeup(wakeup_);
     // Stopped until a goal comes (1.5 published this at set-up).
     protocol::PositionData stopped;
@@ -100,7 +93,7 @@ class WavefrontDriver final : public core::ThreadedDriver, private core::DeviceL
   void close() override {
     position_subscription_.stop_listening();
     localize_subscription_.stop_listening();
-    if (driving_) stop_base();
+    if (navigator_.driving()) stop_base();
     localize_subscription_.reset();
     position_subscription_.reset();
     device().set_wakeup(nullptr);
@@ -154,16 +147,8 @@ class WavefrontDriver final : public core::ThreadedDriver, private core::DeviceL
     const std::optional<core::Command> command = device().take_command();
     if (!command) return;
     const auto wanted = protocol::decode<protocol::PositionCommand>(command->payload);
-    const geometry::Pose2 goal{wanted.xpos / 1000.0, wanted.ypos / 1000.0,
-                               geometry::normalize_angle(wanted.yaw / kDegreesPerRadian)};
-    // The command buffer is persistent: the same goal again is not a new one.
-    if (goal_ && std::hypot(goal.x - goal_->x, goal.y - goal_->y) <= kSameGoalDistance &&
-        std::abs(geometry::angle_difference(goal.yaw, goal_->yaw)) <= kSameGoalAngle) {
-      return;
-    }
-    goal_ = goal;
-    pending_goal_ = goal;  // planned at the next cycle, from the pose then
-    plans_for_goal_ = 0;
+    (void)navigator_.set_goal({wanted.xpos / 1000.0, wanted.ypos / 1000.0,
+                               geometry::normalize_angle(wanted.yaw / kDegreesPerRadian)});
   }
 
   void cycle(const core::DataSample& odometry_sample, const core::DataSample& localize_sample) {
@@ -172,19 +157,10 @@ class WavefrontDriver final : public core::ThreadedDriver, private core::DeviceL
     if (localized.hypoth_count == 0) return;
     const geometry::Pose2 odometry = localization::odometry_pose(odometry_data);
     const geometry::Pose2 map_pose = localization::pose_from_wire(localized.hypoths[0].mean);
-    // Odometry = transform(map): how to hand a map-frame waypoint down.
-    to_odometry_ = odometry.compose(map_pose.inverse());
-
-    if (pending_goal_) {
-      plan(map_pose, *std::exchange(pending_goal_, std::nullopt));
-    } else if (follower_.active()) {
-      const bool jumped = last_map_pose_ && std::hypot(map_pose.x - last_map_pose_->x,
-                                                       map_pose.y - last_map_pose_->y) > options_.jump_distance;
-      const bool local_planner_stuck = odometry_data.stall != 0 && driving_;
-      if (jumped || local_planner_stuck) replan(map_pose, jumped ? "the localization jumped" : "the local planner is stuck");
-    }
-    last_map_pose_ = map_pose;
-    if (follower_.active()) follow(map_pose);
+    const wavefront::BaseOrder order = navigator_.cycle(odometry, map_pose, odometry_data.stall != 0);
+    if (order.kind == wavefront::BaseOrder::Kind::drive_to) send_waypoint(order.target);
+    if (order.kind == wavefront::BaseOrder::Kind::stop) stop_base();
+    log_events();
 
     protocol::PositionData out;
     out.xpos = localized.hypoths[0].mean[0];
@@ -193,59 +169,29 @@ class WavefrontDriver final : public core::ThreadedDriver, private core::DeviceL
     out.xspeed = odometry_data.xspeed;
     out.yspeed = odometry_data.yspeed;
     out.yawspeed = odometry_data.yawspeed;
-    out.stall = driving_ ? 0 : 1;
+    out.stall = navigator_.driving() ? 0 : 1;
     device().publish(protocol::encode(out), odometry_sample.timestamp);
   }
 
-  void plan(const geometry::Pose2& from, const geometry::Pose2& goal) {
-    ++plans_;
-    ++plans_for_goal_;
-    const wavefront::PlanResult result = planner_.plan({from.x, from.y}, {goal.x, goal.y});
-    if (!result.found()) {
-      ++refused_;
-      char where[64];
-      std::snprintf(where, sizeof where, "(%.2f, %.2f)", goal.x, goal.y);
-      device().logger().warning(device().name() + ": goal " + where + " refused: " +
-                                wavefront::describe_failure(result, planner_.parameters()));
-      give_up();
-      return;
+  void log_events() {
+    for (const wavefront::NavigationEvent& event : navigator_.take_events()) {
+      const std::string line = device().name() + ": " + event.message;
+      if (event.kind == wavefront::NavigationEvent::Kind::refused ||
+          event.kind == wavefront::NavigationEvent::Kind::given_up) {
+        device().logger().warning(line);
+      } else {
+        device().logger().info(line);
+      }
     }
-    follower_.follow(result.waypoints, goal.yaw);
+    std::lock_guard lock(counters_mutex_);
+    counters_ = {{"goals_reached", navigator_.goals_reached()},
+                 {"goals_refused", navigator_.goals_refused()},
+                 {"plans", navigator_.plans()},
+                 {"replans", navigator_.replans()}};
   }
 
-  void replan(const geometry::Pose2& from, const std::string& why) {
-    if (plans_for_goal_ >= kMostPlansPerGoal) {
-      device().logger().warning(device().name() + ": " + why + " again after " + std::to_string(plans_for_goal_) +
-                                " plans; goal given up");
-      give_up();
-      return;
-    }
-    ++replans_;
-    device().logger().info(device().name() + ": " + why + "; planning again");
-    plan(from, *goal_);
-  }
-
-  void follow(const geometry::Pose2& map_pose) {
-    const wavefront::WaypointFollower::Step step = follower_.step(map_pose);
-    switch (step.action) {
-      case wavefront::WaypointFollower::Action::idle:
-        return;
-      case wavefront::WaypointFollower::Action::reached:
-        ++reached_;
-        give_up();
-        return;
-      case wavefront::WaypointFollower::Action::replan:
-        replan(map_pose, "the robot strayed from the path");
-        if (follower_.active()) follow(map_pose);
-        return;
-      case wavefront::WaypointFollower::Action::drive:
-        if (step.new_target || !driving_) send_waypoint(step.target);
-        return;
-    }
-  }
-
-  void send_waypoint(const geometry::Pose2& map_target) {
-    const geometry::Pose2 target = to_odometry_.compose(map_target);
+  // `target` in the odometric frame: the local planner's goal.
+  void send_waypoint(const geometry::Pose2& target) {
     protocol::PositionCommand command;
     command.xpos = static_cast<std::int32_t>(std::lround(target.x * 1000.0));
     command.ypos = static_cast<std::int32_t>(std::lround(target.y * 1000.0));
@@ -253,14 +199,6 @@ class WavefrontDriver final : public core::ThreadedDriver, private core::DeviceL
     command.state = 1;
     command.type = 1;
     (void)base_->put_command(kWavefrontAsClient, protocol::encode(command));
-    driving_ = true;
-  }
-
-  // Not driving any more: the robot is told to stop where it is.
-  void give_up() {
-    follower_.clear();
-    if (driving_) stop_base();
-    driving_ = false;
   }
 
   void stop_base() {
@@ -270,8 +208,7 @@ class WavefrontDriver final : public core::ThreadedDriver, private core::DeviceL
 
   const WavefrontOptions options_;
   core::DeviceTable& devices_;
-  wavefront::WavefrontPlanner planner_;
-  wavefront::WaypointFollower follower_;
+  wavefront::WavefrontNavigator navigator_;  // its thread only
   const std::shared_ptr<core::Wakeup> wakeup_ = std::make_shared<core::Wakeup>();
   core::Device* base_ = nullptr;
   core::SourceSubscription position_subscription_;
@@ -279,16 +216,9 @@ class WavefrontDriver final : public core::ThreadedDriver, private core::DeviceL
   std::mutex mutex_;
   std::shared_ptr<const core::DataSample> odometry_;   // newest not used yet
   std::shared_ptr<const core::DataSample> localized_;  // newest
-  std::optional<geometry::Pose2> goal_;          // the last goal given
-  std::optional<geometry::Pose2> pending_goal_;  // given, not planned yet
-  std::optional<geometry::Pose2> last_map_pose_;
-  geometry::Pose2 to_odometry_;
-  int plans_for_goal_ = 0;
-  bool driving_ = false;
-  std::atomic<std::uint64_t> reached_ = 0;
-  std::atomic<std::uint64_t> refused_ = 0;
-  std::atomic<std::uint64_t> plans_ = 0;
-  std::atomic<std::uint64_t> replans_ = 0;
+  mutable std::mutex counters_mutex_;
+  std::vector<core::DriverCounter> counters_{
+      {"goals_reached", 0}, {"goals_refused", 0}, {"plans", 0}, {"replans", 0}};
 };
 
 }  // namespace
