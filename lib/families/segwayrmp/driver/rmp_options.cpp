@@ -18,7 +18,8 @@ core::OptionSchema make_schema() {
   return {
       OptionSpec::word("canio", "socketcan", {"socketcan", "slcan", "kvaser"})
           .doc("how the CAN bus is reached: socketcan (a Linux CAN interface, `device`) or slcan (a USB-CAN "
-               "adapter speaking Lawicel ASCII on `port`); 1.5's kvaser (Kvaser's CANLIB) is refused"),
+               "adapter speaking Lawicel ASCII on `port`; the default when a port is written); 1.5's kvaser "
+               "(Kvaser's CANLIB) is refused"),
       OptionSpec::text("device", "can0").doc("socketcan: the CAN network interface (can0, vcan0) (playerkit)"),
       links::port_option("/dev/ttyUSB0").doc("slcan: the adapter's serial port, or tcp:HOST:PORT (playerkit)"),
       OptionSpec::choice("baudrate", 115200, {9600, 19200, 38400, 57600, 115200, 230400, 460800, 500000, 921600,
@@ -100,7 +101,11 @@ RmpSettings read_rmp_settings(const core::DriverContext& context) {
     }
     return value;
   });
-  settings.canio = canio.value_or("socketcan") == "slcan" ? CanIo::slcan : CanIo::socketcan;
+  // Without canio, a port names an slcan adapter (what `player-drivers probe` finds and prints).
+  const bool port_given = robot_value(context, "port", [](const core::OptionReader& options, std::string_view name) {
+                            return options.text(name);
+                          }).has_value();
+  settings.canio = canio.value_or(port_given ? "slcan" : "socketcan") == "slcan" ? CanIo::slcan : CanIo::socketcan;
   settings.device = text_option(context, "device");
   settings.port = text_option(context, "port");
   settings.baudrate = integer_option(context, "baudrate");

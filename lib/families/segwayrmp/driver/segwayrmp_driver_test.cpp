@@ -184,7 +184,7 @@ TEST_F(SegwayRmpDriverTest, TheLastDeviceToLeaveStopsTheRobotAndClosesTheChannel
 }
 
 TEST_F(SegwayRmpDriverTest, TheManualsNameServesAllThreeInterfaces) {
-  devices.load("position:0 ( driver \"segwayrmp\" canio \"slcan\" port \"$PORT\" bitrate 500000 )\n"
+  devices.load("position:0 ( driver \"segwayrmp\" port \"$PORT\" bitrate 500000 )\n"  // a port: slcan
                "power:0 ( driver \"segwayrmp\" )\n",
                robot.port());
   ASSERT_TRUE(position().subscribe()) << devices.log.all();
