@@ -75,6 +75,7 @@ bool RflexConnection::start_session(links::ByteLink& link, Clock::time_point dea
     if (auto telegram = reader_->next(std::min(deadline, links::deadline_in(100ms)))) {
       if (const auto packet = hw::decode_packet(*telegram)) {
         readings_.restart_counters();
+        odometry_was_ready_ = false;
         handle_packet(*packet);
         last_packet_ = Clock::now();
         next_cycle_ = last_packet_;
@@ -156,6 +157,8 @@ void RflexConnection::serve(links::ByteLink& /*link*/, const core::Wakeup::Woken
       next_cycle_ = std::max(next_cycle_ + kCycle, now);
     }
     if (new_pair_) {
+      if (!odometry_was_ready_ && readings_.odometry_ready()) send_velocity();  // what waited for it
+      odometry_was_ready_ = readings_.odometry_ready();
       publish();
       new_pair_ = false;
     }

@@ -113,6 +113,7 @@ class RflexConnection final : public hardware_driver::RobotConnection {
   Clock::time_point last_packet_{};
   Clock::time_point next_cycle_{};
   bool new_pair_ = false;
+  bool odometry_was_ready_ = false;
 
   bool position_active_ = false;
   double xspeed_ = 0.0;    // mm/s, the last command

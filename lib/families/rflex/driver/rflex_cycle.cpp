@@ -96,8 +96,11 @@ void RflexConnection::take_commands() {
 }
 
 void RflexConnection::send_velocity() {
+  // Motion waits for the first pair of reports: the odometry counts from
+  // there, so a robot that moved before would be off by what it drove.
+  const bool may_move = position_active_ && readings_.odometry_ready();
   const auto [translation, rotation] =
-      position_active_ ? velocity_commands(xspeed_, yawspeed_, settings_) : velocity_commands(0, 0, settings_);
+      may_move ? velocity_commands(xspeed_, yawspeed_, settings_) : velocity_commands(0, 0, settings_);
   send(hw::axis_set_direction(translation));
   send(hw::axis_set_direction(rotation));
 }

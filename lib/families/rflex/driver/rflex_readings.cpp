@@ -49,6 +49,7 @@ bool RflexReadings::take_motion(const hw::MotionReport& report) {
 }
 
 void RflexReadings::restart_counters() {
+  odometry_started_ = false;
   distance_.reset();
   bearing_.reset();
   pending_distance_.reset();
