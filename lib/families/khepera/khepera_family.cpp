@@ -21,7 +21,7 @@ FamilySpec khepera_family() {
           {
               "player-drivers info khepera_position",
               "player-drivers run khepera port=/dev/ttyUSB0 -n 5",
-              "player-drivers emulate khepera --link /tmp/khepera --map data/maps/simple.pgm",
+              "player-drivers emulate khepera --link /tmp/khepera --map data/maps/stage-cave.yaml pose=0,0,90",
           },
   };
 }

@@ -104,10 +104,9 @@ bool KheperaConnection::try_ask(const hw::Message& command) {
 
 void KheperaConnection::run_cycle() {
   if (position_active_) send_speeds();
-  const auto ir_count = ir_options_.sensors.size();
-  // N every cycle, as 1.5, so a client subscribing finds readings at once.
-  const auto proximity = ask(hw::read_proximity(), ir_active_ ? std::optional(ir_count) : std::nullopt);
-  proximity_ = proximity.values;
+  // N every cycle, as 1.5, so a client subscribing finds readings at once;
+  // a robot with fewer sensors than pose_count fills only theirs.
+  proximity_ = ask(hw::read_proximity(), std::nullopt).values;
   const auto counters = ask(hw::read_position(), 2);
   const auto speeds = ask(hw::read_speed(), 2);
   const hw::WheelGeometry& wheels = position_options_.wheels;

@@ -9,12 +9,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <memory>
 #include <numbers>
 #include <string>
 
 #include "config/errors.hpp"
 #include "drivers/driver_harness_test_support.hpp"
+#include "families/khepera/driver/khepera_options.hpp"
 #include "families/khepera/emulator/khepera_emulator.hpp"
 #include "protocol/interfaces.hpp"
 #include "protocol/messages/ir.hpp"
@@ -211,6 +214,41 @@ TEST(KheperaOptions, BadValuesAreRefusedAtTheirPlace) {
   EXPECT_NE(differ.find(":2:"), std::string::npos) << differ;
   // 1.5's names: scale (the manual's) and scale_factor (the source's).
   EXPECT_EQ(load_error("position:0 ( driver \"khepera_position\" scale 5 )\n"), "no error");
+}
+
+// The README's option tables are the schemas' own.
+TEST(KheperaOptions, TheReadmeTablesAreGeneratedFromTheSchemas) {
+  std::ifstream in(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/khepera/README.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string all = text.str();
+  const auto table = [&all](const std::string& name) {
+    const std::string begin = "<!-- " + name + " options -->\n";
+    const auto start = all.find(begin);
+    const auto end = all.find("<!-- end " + name + " options -->", start);
+    if (start == std::string::npos || end == std::string::npos) return std::string("no table");
+    return all.substr(start + begin.size(), end - start - begin.size());
+  };
+  EXPECT_EQ(table("position"), khepera::khepera_position_schema().markdown());
+  EXPECT_EQ(table("ir"), khepera::khepera_ir_schema().markdown());
+}
+
+// More sensors than the default eight, each with its pose and calibration.
+TEST_F(KheperaDriverTest, MoreSensorsThanTheDefaultTakeTheirPosesFromTheConfiguration) {
+  load("", "pose_count 9 poses [1 0 0 2 0 0 3 0 0 4 0 0 5 0 0 6 0 0 7 0 0 8 0 0 9 0 45] ir_calib_a [1 1 1 1 1 1 1 1 100]");
+  ASSERT_TRUE(ir().subscribe()) << devices.log.all();
+  const auto poses = ask(ir(), std::vector<std::uint8_t>{protocol::kIrPoseReq});
+  ASSERT_TRUE(acked(poses));
+  const auto reply = protocol::decode<protocol::IrPoseRequest>(poses->payload);
+  EXPECT_EQ(reply.poses.pose_count, 9);
+  EXPECT_EQ(reply.poses.poses[8], (std::array<std::int16_t, 3>{90, 0, 45}));
+  // The emulated robot has eight: their readings, and the robot not lost.
+  const auto data = next_data<protocol::IrData>(ir());
+  ASSERT_TRUE(data);
+  EXPECT_EQ(data->range_count, 8);
+  EXPECT_EQ(data->ranges[0], 10);  // 10 x 1 x 1^b
+  EXPECT_TRUE(more_data(ir(), 3));
+  EXPECT_EQ(counter(ir().driver(), "robot_lost"), 0u);
 }
 
 TEST_F(KheperaDriverTest, RefusesTheSubscriptionWhenNothingAnswers) {
