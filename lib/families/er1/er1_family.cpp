@@ -50,7 +50,7 @@ FamilySpec er1_family() {
               "player-drivers info er1_position",
               "player-drivers run er1_position port=/dev/ttyUSB0 -n 5",
               "player-drivers emulate er1 --link /tmp/er1",
-              "player-drivers emulate er1 sicklms200 --link /tmp/er1 --link /tmp/laser --map data/maps/simple.pgm",
+              "player-drivers emulate er1 sicklms200 --link /tmp/er1 --link /tmp/laser --map data/maps/stage-cave.png",
           },
   };
 }
