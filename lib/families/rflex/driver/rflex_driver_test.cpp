@@ -198,5 +198,25 @@ TEST(RflexDriver, TheRobotsUnitsComeFromTheConfiguration) {
   write_command(devices.position(), protocol::PositionCommand{});
 }
 
+TEST(RflexDriver, TheManualsSonarPoseOrderAndOneRobotFromEverySection) {
+  EmulatedRflex robot;
+  RflexDevices devices(robot.port(),
+                       "sonar:0 ( driver \"rflex_sonar\" num_sonars 3 num_sonar_banks 1 num_sonars_in_bank [3] "
+                       "sonar_pose_order \"x_y_theta\" mmrad_sonar_poses [100 0 0 0 100 1.5708 -100 0 3.1416] )\n"
+                       "power:0 ( driver \"rflex_power\" rflex_serial_port \"$PORT\" rflex_power_offset -4 "
+                       "rflex_done 1 )\n");
+  ASSERT_TRUE(devices.sonar().subscribe()) << devices.log.all();
+  ASSERT_TRUE(devices.power().subscribe());
+  const auto reply = ask(devices.sonar(), std::vector<std::uint8_t>{protocol::kSonarGetGeomReq});
+  ASSERT_TRUE(acked(reply));
+  const auto geom = protocol::decode<protocol::SonarGeom>(reply->payload);
+  ASSERT_EQ(geom.pose_count, 3);
+  EXPECT_EQ(geom.poses[1], (std::array<std::int16_t, 3>{0, 100, 90}));
+  EXPECT_EQ(geom.poses[2], (std::array<std::int16_t, 3>{-100, 0, 180}));
+  EXPECT_EQ(next_data<protocol::PowerData>(devices.power())->charge, 264 - 4);
+  // Both on the one line written on the power section.
+  EXPECT_EQ(devices.counter(devices.sonar(), "motion_reports"), devices.counter(devices.power(), "motion_reports"));
+}
+
 }  // namespace rflex_driver_test
 }  // namespace playerkit::drivers
