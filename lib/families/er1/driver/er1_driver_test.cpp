@@ -9,11 +9,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <memory>
+#include <sstream>
 #include <string>
 
 #include "config/errors.hpp"
 #include "drivers/driver_harness_test_support.hpp"
+#include "families/er1/driver/er1_options.hpp"
 #include "families/er1/emulator/er1_emulator.hpp"
 #include "families/er1/protocol/er1_commands.hpp"
 #include "protocol/interfaces.hpp"
@@ -190,6 +193,20 @@ TEST(Er1Options, BadValuesAreRefusedAtTheirPlace) {
   EXPECT_NE(axle.find(":1:41: er1_position: axle must be between"), std::string::npos) << axle;
   EXPECT_EQ(load_error("position:0 ( driver \"er1_position\" port \"/dev/usb/ttyUSB1\" axle 0.4 motor_dir -1 debug 1 )\n"),
             "no error");
+}
+
+// The README's options table is the schema's own (between "<!-- options
+// er1_position -->" and "<!-- end options -->").
+TEST(Er1Options, TheReadmeTableIsTheSchemas) {
+  std::ifstream in(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/er1/README.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string all = text.str();
+  const std::string begin = "<!-- options er1_position -->\n";
+  const auto start = all.find(begin);
+  const auto end = all.find("<!-- end options -->", start);
+  ASSERT_TRUE(start != std::string::npos && end != std::string::npos) << er1::er1_option_schema().markdown();
+  EXPECT_EQ(all.substr(start + begin.size(), end - start - begin.size()), er1::er1_option_schema().markdown());
 }
 
 TEST_F(Er1DriverTest, RefusesTheSubscriptionWhenThePortIsGone) {
