@@ -7,8 +7,17 @@ namespace playerkit::drivers::nomad {
 
 namespace nomad = hardware::nomad;
 
+namespace {
+
+// The longest reply worth waiting for: a state with some room to spare (the
+// sensor mask asks for no laser points). A reply that stalls half way is
+// waited for as long as this takes on a slow line, so it stays short.
+constexpr std::size_t kLongestReply = nomad::kHeaderSize + 4 * (nomad::kStateWords + 64);
+
+}  // namespace
+
 NomadSession::NomadSession(links::ByteLink& link, std::function<bool()> stopping, SessionTimeouts timeouts)
-    : reader_(link, format_, nomad::kMaxMessageSize),
+    : reader_(link, format_, kLongestReply),
       exchanger_(reader_, std::move(stopping), "the Nomad server"),
       timeouts_(timeouts) {}
 
@@ -23,7 +32,9 @@ nomad::Message NomadSession::ask(const nomad::Message& request, std::chrono::mil
              return links::ReplyMatch::mine;  // lock-step: the next message answers
            },
        .timeout = timeout,
-       .attempts = 1,  // TCP loses nothing but the connection: no resend
+       // A reply cut short never ends: what came of it is dropped and the
+       // request sent again (each is idempotent) before the robot is lost.
+       .attempts = 2,
        .flush_first = true});
   auto message = nomad::decode(telegram);
   if (!message) throw std::runtime_error("the Nomad server's reply to " + std::string(nomad::type_name(request.type)) +
@@ -32,7 +43,11 @@ nomad::Message NomadSession::ask(const nomad::Message& request, std::chrono::mil
 }
 
 void NomadSession::start(std::int32_t client_pid, bool zero) {
+  // The server may answer CONNECT_ROBOT with any type (nomad.md §1.2);
+  // after it, only states and errors.
+  format_.expect({});
   const nomad::Message connected = ask(nomad::connect_robot(client_pid), timeouts_.reply);
+  format_.expect(nomad::state_reply_types());
   if (connected.words.empty() || connected.words[0] == 0) {
     throw std::runtime_error("the Nomad server refused CONNECT_ROBOT for robot " + std::to_string(nomad::kRobotId) +
                              " (it answered port 0)");

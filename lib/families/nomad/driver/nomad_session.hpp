@@ -35,7 +35,7 @@ class NomadSession {
  private:
   hardware::nomad::Message ask(const hardware::nomad::Message& request, std::chrono::milliseconds timeout);
 
-  const hardware::nomad::NclientFormat format_;
+  hardware::nomad::NclientFormat format_;
   links::FramedReader reader_;
   links::Exchanger exchanger_;
   SessionTimeouts timeouts_;

@@ -1,5 +1,7 @@
 #include "families/nomad/protocol/nclient_message.hpp"
 
+#include <algorithm>
+
 namespace playerkit::hardware::nomad {
 
 namespace {
@@ -65,9 +67,17 @@ framing::FrameScan NclientFormat::scan(std::span<const std::uint8_t> buffered) c
   if (buffered.size() < kHeaderSize) return framing::FrameScan::need(kHeaderSize);
   const std::size_t count = get_u16(buffered, 2);
   if (count > kMaxWords) return framing::FrameScan::noise(1);
+  if (!expected_.empty()) {
+    const auto type = static_cast<std::int16_t>(get_u16(buffered, 0));
+    if (std::find(expected_.begin(), expected_.end(), type) == expected_.end()) return framing::FrameScan::noise(1);
+  }
   const std::size_t size = kHeaderSize + 4 * count;
   if (buffered.size() < size) return framing::FrameScan::need(size);
   return framing::FrameScan::whole(size);
+}
+
+std::vector<std::int16_t> state_reply_types() {
+  return {message_type::kState, message_type::kError, message_type::kFailure};
 }
 
 }  // namespace playerkit::hardware::nomad

@@ -53,12 +53,26 @@ struct Message {
 [[nodiscard]] std::string_view type_name(std::int16_t type);
 
 // Cuts the stream at the header's word count. There is no sync byte and no
-// checksum: on TCP a message is lost only with the connection, so the one
-// check is an absurd count (noise: one byte dropped).
+// checksum, so the header is all there is to judge: an absurd count, or a
+// type the reader does not expect, is noise (one byte dropped), which finds
+// the next real header behind stray bytes.
 class NclientFormat final : public framing::FrameFormat {
  public:
+  // Any type.
+  NclientFormat() = default;
+  explicit NclientFormat(std::vector<std::int16_t> expected_types) : expected_(std::move(expected_types)) {}
+  // From now on only these types (empty: any), for a reader whose next
+  // replies are known.
+  void expect(std::vector<std::int16_t> types) { expected_ = std::move(types); }
+
   [[nodiscard]] std::string_view name() const override { return "nclient"; }
   [[nodiscard]] framing::FrameScan scan(std::span<const std::uint8_t> buffered) const override;
+
+ private:
+  std::vector<std::int16_t> expected_;
 };
+
+// What a client reads once connected: a state, an error, or a failure.
+[[nodiscard]] std::vector<std::int16_t> state_reply_types();
 
 }  // namespace playerkit::hardware::nomad

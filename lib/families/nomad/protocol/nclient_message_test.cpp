@@ -52,6 +52,22 @@ TEST(NclientFormat, AnAbsurdCountIsNoise) {
   EXPECT_EQ(scan.length, 1U);
 }
 
+TEST(NclientFormat, AReaderExpectingStatesSkipsStrayBytesToTheNextState) {
+  const NclientFormat format(state_reply_types());
+  Bytes stream{0x01, 0x02, 0x00};
+  const Bytes state = encode(state_reply({}));
+  stream.insert(stream.end(), state.begin(), state.end());
+  std::size_t skipped = 0;
+  std::span<const std::uint8_t> rest(stream);
+  for (auto scan = format.scan(rest); scan.kind == framing::FrameScan::Kind::skip; scan = format.scan(rest)) {
+    skipped += scan.length;
+    rest = rest.subspan(scan.length);
+  }
+  EXPECT_EQ(skipped, 3U);
+  EXPECT_EQ(format.scan(rest).length, state.size());
+  EXPECT_EQ(NclientFormat().scan(Bytes{0x01, 0x02, 0x00, 0x00}).kind, framing::FrameScan::Kind::frame);
+}
+
 TEST(NomadState, TheSheetsWordsInTheirPlaces) {
   RobotState state;
   state.simulation_speed = 1;
