@@ -8,11 +8,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <memory>
 #include <string>
 
 #include "config/errors.hpp"
 #include "drivers/driver_harness_test_support.hpp"
+#include "families/segwayrmp/driver/rmp_options.hpp"
 #include "families/segwayrmp/emulator/segwayrmp_emulator.hpp"
 #include "protocol/interfaces.hpp"
 #include "protocol/messages/position.hpp"
@@ -218,6 +221,19 @@ TEST(SegwayRmpOptions, KvaserIsRefusedAtItsPlaceWithTheWayOut) {
   const std::string differ = load_error(
       "position:0 ( driver \"rmpposition\" canio \"slcan\" )\npower:0 ( driver \"rmppower\" canio \"socketcan\" )\n");
   EXPECT_NE(differ.find("canio"), std::string::npos) << differ;
+}
+
+TEST(SegwayRmpOptions, TheReadmeTableIsTheSchemas) {
+  std::ifstream in(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/segwayrmp/README.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string all = text.str();
+  const std::string begin = "<!-- options segwayrmp -->\n";
+  const auto start = all.find(begin);
+  const auto end = all.find("<!-- end options -->", start);
+  const std::string table = segwayrmp::rmp_option_schema().markdown();
+  ASSERT_TRUE(start != std::string::npos && end != std::string::npos) << table;
+  EXPECT_EQ(all.substr(start + begin.size(), end - start - begin.size()), table);
 }
 
 TEST(SegwayRmpOptions, SocketCanWithoutTheInterfaceRefusesTheSubscriptionNamingIt) {
