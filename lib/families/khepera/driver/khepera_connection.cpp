@@ -121,11 +121,9 @@ bool KheperaConnection::reconnect(links::ByteLink& link, Attempt attempt, const 
     exchanger_ = std::make_unique<links::Exchanger>(*reader_, std::function<bool()>{}, "the Khepera");
   }
   (void)ask(hw::read_speed(), 2);  // silence throws: the base tries again
-  {
-    // The robot may have been reset: its devices start again as if new.
-    std::lock_guard lock(views_mutex_);
-    position_active_ = ir_active_ = false;
-  }
+  // The reported pose carries on from where it was: the counters are read
+  // afresh (the robot may have been reset meanwhile), and the next cycle
+  // sends the wheels the current command, stopped since the loss.
   start_session();
   return true;
 }
