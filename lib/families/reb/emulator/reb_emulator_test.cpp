@@ -12,7 +12,9 @@ using namespace std::chrono_literals;
 using hardware::reb::Motor;
 
 struct Session {
-  RebEmulator board{RebEmulatorOptions{}};
+  Session() : board(RebEmulatorOptions{}) {}
+  explicit Session(const RebEmulatorOptions& options) : board(options) {}
+  RebEmulator board;
   Duration now{0};
 
   // Writes `line` and CR, lets `wait` pass, returns everything the board said.
@@ -107,6 +109,24 @@ TEST(RebEmulator, IrReadsNothingWhileOffOrWithNothingNear) {
   session.say("Y,1");
   EXPECT_TRUE(session.board.ir_on());
   EXPECT_EQ(session.say("W"), "w,0,0,0,0,0,0,0,0\r\n:\r\n");  // no map: nothing in range
+}
+
+TEST(RebEmulator, IrSeesTheMapsWallsAndTheBodyStallsAgainstThem) {
+  // Free space with a wall 0.2 m ahead of the robot.
+  grid::OccupancyGrid map(100, 100, 0.01, Eigen::Vector2d(-0.5, -0.5), grid::CellState::free);
+  for (int row = 0; row < 100; ++row) map.set(70, row, grid::CellState::occupied);
+  RebEmulatorOptions options;
+  options.map = &map;
+  Session session(options);
+  session.say("Y,1");
+  // Sensor 0 sits 35 mm ahead: 165 mm from the wall, 250 mV m / 0.165 m in 4 mV steps.
+  EXPECT_NEAR(session.board.ir_reading(0), 379, 3);
+  EXPECT_EQ(session.board.ir_reading(4), 0);  // nothing behind within 0.8 m
+  session.say("D,2,48");
+  session.say("D,0,-48");
+  session.run(3s);
+  EXPECT_LT(session.board.drive().true_pose().x, 0.2 - 0.09 + 0.01);  // the body's 90 mm radius
+  EXPECT_GT(session.board.ir_reading(0), 379);
 }
 
 }  // namespace reb_emulator_test
