@@ -1,9 +1,22 @@
 #include "families/nomad/nomad_emulator_kind.hpp"
 
 #include "emulators/emulator_option_reader.hpp"
+#include "emulators/mobile_base/robot_options.hpp"
 #include "families/nomad/emulator/nomad_emulator.hpp"
 
 namespace playerkit::families {
+
+namespace {
+
+// Every robot's body options (pose, odometry error), then the server's own.
+std::vector<emulators::EmulatorOptionDoc> nomad_emulator_options() {
+  auto options = emulators::mobile_base::robot_option_docs();
+  options.push_back({"reply_delay", "20", "ms the server takes to answer a request"});
+  options.push_back({"ir_range", "36", "inches the infrared sensors see at most"});
+  return options;
+}
+
+}  // namespace
 
 emulators::EmulatorKind nomad_emulator_kind() {
   return {
@@ -12,20 +25,13 @@ emulators::EmulatorKind nomad_emulator_kind() {
       .interface_name = "nomad",
       .driver = "nomad",
       .mount = emulators::EmulatorMount::robot,
-      .options =
-          {
-              {"pose", "0,0,0", "where it starts in the map: x m, y m, heading deg"},
-              {"odometry_scale", "1", "odometry's distance per true distance"},
-              {"rotation_scale", "1", "odometry's angle per true angle"},
-              {"reply_delay", "20", "ms the server takes to answer a request"},
-              {"ir_range", "36", "inches the infrared sensors see at most"},
-          },
+      .options = nomad_emulator_options(),
       .make =
           [](const emulators::EmulatorOptionReader& reader, const emulators::EmulatorWorld& world) {
             emulators::NomadEmulatorOptions options;
-            options.start_pose = reader.pose("pose", {});
-            options.translation_scale = reader.number("odometry_scale", 1.0, 0.5, 1.5);
-            options.rotation_scale = reader.number("rotation_scale", 1.0, 0.5, 1.5);
+            const auto body = emulators::mobile_base::read_robot_options(reader);
+            options.start_pose = body.initial_pose;
+            options.odometry_error = body.odometry_error;
             options.reply_delay = std::chrono::milliseconds(reader.integer("reply_delay", 20, 0, 1000));
             options.ir_range_inches = reader.integer("ir_range", 36, 1, 255);
             options.map = world.map;

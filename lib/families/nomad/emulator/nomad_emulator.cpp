@@ -37,7 +37,12 @@ std::int32_t reported_angle(double tenths) {
 }  // namespace
 
 NomadEmulator::NomadEmulator(NomadEmulatorOptions options)
-    : options_(options), true_pose_(options.start_pose), true_turret_(options.start_pose.yaw) {}
+    : options_(options),
+      ring_(mobile_base::evenly_spaced_ring(static_cast<int>(nomad::kSonarCount), options.sensor_ring_radius, 0.0,
+                                            mobile_base::RingOrder::counter_clockwise)),
+      noise_(options.odometry_error.seed),
+      true_pose_(options.start_pose),
+      true_turret_(options.start_pose.yaw) {}
 
 void NomadEmulator::receive(std::span<const std::uint8_t> bytes, Duration now, int /*host_baud*/) {
   advance(now);
@@ -165,14 +170,22 @@ void NomadEmulator::move(double duration) {
       true_pose_.x = next.x;
       true_pose_.y = next.y;
     }
-    const double odometry_step = travelled / kMetresPerTenthInch * options_.translation_scale;
+    // The encoders' view: scaled, drifting and noisy as configured.
+    const auto& error = options_.odometry_error;
+    const double distance = std::abs(travelled);
+    std::normal_distribution<double> unit_normal;
+    double measured = travelled * (1.0 + error.translation_scale);
+    double heading_error = error.heading_drift_per_metre * distance;
+    if (distance > 0 && error.translation_noise > 0) measured += error.translation_noise * std::sqrt(distance) * unit_normal(noise_);
+    if (distance > 0 && error.rotation_noise > 0) heading_error += error.rotation_noise * std::sqrt(distance) * unit_normal(noise_);
     const double odometry_heading = odometry_steering_ * kRadiansPerTenthDegree;
-    odometry_x_ += odometry_step * std::cos(odometry_heading);
-    odometry_y_ += odometry_step * std::sin(odometry_heading);
+    odometry_x_ += measured / kMetresPerTenthInch * std::cos(odometry_heading);
+    odometry_y_ += measured / kMetresPerTenthInch * std::sin(odometry_heading);
     true_pose_.yaw = geometry::normalize_angle(true_pose_.yaw + steer_rate * dt);
     true_turret_ = geometry::normalize_angle(true_turret_ + turret_rate * dt);
-    odometry_steering_ += steering_velocity_ * dt * options_.rotation_scale;
-    odometry_turret_ += turret_velocity_ * dt * options_.rotation_scale;
+    const double rotation_factor = 1.0 + error.rotation_scale;
+    odometry_steering_ += steering_velocity_ * dt * rotation_factor + heading_error / kRadiansPerTenthDegree;
+    odometry_turret_ += turret_velocity_ * dt * rotation_factor + heading_error / kRadiansPerTenthDegree;
   }
 }
 
@@ -188,18 +201,15 @@ bool NomadEmulator::touches_wall(const geometry::Pose2& pose, std::int32_t& bump
 }
 
 void NomadEmulator::sense(nomad::RobotState& state) const {
+  // The ring turns with the turret, about the body's centre.
+  const geometry::Pose2 turret{true_pose_.x, true_pose_.y, true_turret_};
+  const auto inches = [&](int index, int max_inches) {
+    const double range = ring_.range(index, options_.map, turret, max_inches * kMetresPerInch);
+    return std::clamp(static_cast<int>(std::lround(range / kMetresPerInch)), 0, max_inches);
+  };
   for (std::size_t i = 0; i < nomad::kSonarCount; ++i) {
-    const double angle = true_turret_ + static_cast<double>(i) * kSensorSpacing;
-    const Eigen::Vector2d origin{true_pose_.x + options_.sensor_ring_radius * std::cos(angle),
-                                 true_pose_.y + options_.sensor_ring_radius * std::sin(angle)};
-    const auto inches = [&](int max_inches) {
-      if (options_.map == nullptr) return max_inches;
-      const double range =
-          grid::cast_ray(*options_.map, origin, angle, max_inches * kMetresPerInch, grid::RayStop::occupied);
-      return std::clamp(static_cast<int>(std::lround(range / kMetresPerInch)), 0, max_inches);
-    };
-    state.sonar[i] = inches(kSonarMaxInches);
-    state.ir[i] = inches(options_.ir_range_inches);
+    state.sonar[i] = inches(static_cast<int>(i), kSonarMaxInches);
+    state.ir[i] = inches(static_cast<int>(i), options_.ir_range_inches);
   }
 }
 

@@ -22,10 +22,13 @@
 #include <cstdint>
 #include <deque>
 #include <optional>
+#include <random>
 #include <string>
 #include <vector>
 
 #include "emulators/device_emulator.hpp"
+#include "emulators/mobile_base/odometry_error.hpp"
+#include "emulators/mobile_base/range_ring.hpp"
 #include "families/nomad/protocol/nclient_message.hpp"
 #include "families/nomad/protocol/nomad_requests.hpp"
 
@@ -37,9 +40,8 @@ namespace playerkit::emulators {
 
 struct NomadEmulatorOptions {
   Duration reply_delay = std::chrono::milliseconds(20);
-  geometry::Pose2 start_pose;        // in the map: m, m, rad (the steering and turret angle)
-  double translation_scale = 1.0;    // odometry's distance per true distance
-  double rotation_scale = 1.0;       // odometry's angle per true angle
+  geometry::Pose2 start_pose;  // in the map: m, m, rad (the steering and turret angle)
+  mobile_base::OdometryError odometry_error;
   // The radius the reference driver gave in its geometry (nomad.md §2.2),
   // so that what the emulated robot touches and sees agrees with it.
   double body_radius = 0.4;         // m: the bumper ring
@@ -81,6 +83,8 @@ class NomadEmulator final : public DeviceEmulator {
   [[nodiscard]] bool touches_wall(const geometry::Pose2& pose, std::int32_t& bumpers) const;
 
   const NomadEmulatorOptions options_;
+  const mobile_base::RangeRing ring_;  // sonars and infrared share the turret's rim
+  std::mt19937_64 noise_;
   std::vector<std::uint8_t> input_;
   std::deque<PendingReply> pending_;
   std::vector<Telegram> output_;

@@ -131,7 +131,7 @@ TEST(NomadEmulator, StopsWhenNoVelocityCommandCameWithinTheTimeout) {
 
 TEST(NomadEmulator, OdometryCarriesTheConfiguredError) {
   NomadEmulatorOptions options;
-  options.translation_scale = 1.1;
+  options.odometry_error.translation_scale = 0.1;
   options.start_pose = {1.0, 2.0, 0.0};
   Client client(options);
   client.ask(nomad::velocity(100, 0, 0));
