@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 #include "config/errors.hpp"
 #include "drivers/test_support.hpp"
@@ -114,4 +116,29 @@ TEST(RflexOptions, TwoDifferentPortsAreAnErrorAtTheSecond) {
 }
 
 }  // namespace rflex_options_test
+}  // namespace playerkit::drivers
+
+namespace playerkit::drivers {
+namespace rflex_options_readme_test {
+
+// The README's tables are the schemas' own (between "<!-- options
+// rflex_<role> -->" and "<!-- end options -->").
+TEST(RflexOptions, TheReadmeTablesAreGeneratedFromTheSchemas) {
+  std::ifstream in(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/rflex/README.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string all = text.str();
+  for (const rflex::RflexRole role : {rflex::RflexRole::position, rflex::RflexRole::sonar, rflex::RflexRole::ir,
+                                      rflex::RflexRole::bumper, rflex::RflexRole::power}) {
+    const std::string begin = "<!-- options " + std::string(rflex::driver_name(role)) + " -->\n";
+    const auto start = all.find(begin);
+    const auto end = all.find("<!-- end options -->", start);
+    ASSERT_NE(start, std::string::npos) << begin;
+    ASSERT_NE(end, std::string::npos);
+    const std::string table = rflex::rflex_option_schema(role).markdown();
+    EXPECT_EQ(all.substr(start + begin.size(), end - start - begin.size()), table) << begin;
+  }
+}
+
+}  // namespace rflex_options_readme_test
 }  // namespace playerkit::drivers
