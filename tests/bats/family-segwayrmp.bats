@@ -68,3 +68,13 @@ teardown() {
   stop_cleanly "$server_pid"
   stop_cleanly "$emulator_pid"
 }
+
+@test "segwayrmp carries an emulated laser, and takes the shared robot options" {
+  start_emulator "$BATS_TEST_TMPDIR/emulate.out" "$BATS_TEST_TMPDIR/emulate.err" \
+    segwayrmp pose=1,2,90 odometry_scale=0.02 watchdog=0.5 sicklms200 mount=0.2,0,0 \
+    --link "$BATS_TEST_TMPDIR/rmp" --link "$BATS_TEST_TMPDIR/laser"
+  grep -q "^segwayrmp on $BATS_TEST_TMPDIR/rmp: " "$BATS_TEST_TMPDIR/emulate.out"
+  grep -q "^sicklms200 on $BATS_TEST_TMPDIR/laser: " "$BATS_TEST_TMPDIR/emulate.out"
+  wait_for_line --pid "$emulator_pid" "$BATS_TEST_TMPDIR/emulate.err" "sicklms200 rides on the emulated robot"
+  stop_cleanly "$emulator_pid"
+}
