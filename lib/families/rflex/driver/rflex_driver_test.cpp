@@ -54,6 +54,7 @@ TEST(RflexDriver, DrivesAtTheCommandedSpeedAndIntegratesOdometry) {
   ASSERT_TRUE(robot.wait_until([](RflexEmulator& e) { return e.translation_command() == 0; }));
   const auto stopped = data_when<protocol::PositionData>(
       position, [](const protocol::PositionData& d) { return d.xspeed == 0; });
+  ASSERT_TRUE(stopped && stopped->xspeed == 0);
   ASSERT_TRUE(more_data(position, 2));
   // The odometry is where the robot is (no error configured).
   const auto last = latest<protocol::PositionData>(position);
