@@ -250,10 +250,7 @@ void RmpConnection::run(const std::stop_token& stop) {
     }
     try {
       serve(woke);
-    } catch (const links::LinkError& e) {
-      lose(e.what());
-      continue;
-    } catch (const std::runtime_error& e) {
+    } catch (const std::runtime_error& e) {  // a links::LinkError, or the robot's silence
       lose(e.what());
       continue;
     }

@@ -12,11 +12,15 @@
 #include <sstream>
 #include <memory>
 #include <string>
+#include <thread>
 
 #include "config/errors.hpp"
 #include "drivers/driver_harness_test_support.hpp"
 #include "families/segwayrmp/driver/rmp_options.hpp"
 #include "families/segwayrmp/emulator/segwayrmp_emulator.hpp"
+#include "links/can/can_bus.hpp"
+#include "links/can/slcan.hpp"
+#include "links/can/socketcan_link.hpp"
 #include "protocol/interfaces.hpp"
 #include "protocol/messages/position.hpp"
 #include "protocol/messages/position3d.hpp"
@@ -241,6 +245,77 @@ TEST(SegwayRmpOptions, SocketCanWithoutTheInterfaceRefusesTheSubscriptionNamingI
   devices.load("position:0 ( driver \"segwayrmp\" canio \"socketcan\" device \"nosuchcan3\" )\n");
   EXPECT_FALSE(devices.device(protocol::kPositionCode).subscribe());
   EXPECT_FALSE(devices.log.first_with({"nosuchcan3"}, 1s).empty()) << devices.log.all();
+}
+
+// The emulated robot on vcan0: a thread of the test carries its slcan lines
+// to the bus as frames and the bus's frames to it (the emulator itself
+// speaks slcan only).
+class RobotOnVcan {
+ public:
+  RobotOnVcan() : link_("vcan0", {}), bus_(link_, links::can::CanTransport::socketcan) {
+    thread_ = std::jthread([this](std::stop_token stop) { run(stop); });
+  }
+  template <class Read>
+  auto with(Read read) {
+    std::lock_guard lock(mutex_);
+    return read(robot_);
+  }
+
+ private:
+  void say(const std::string& text, emulators::Duration now) {
+    robot_.receive(std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()), now, 0);
+  }
+  void run(const std::stop_token& stop) {
+    const auto began = std::chrono::steady_clock::now();
+    const auto since = [&] { return std::chrono::steady_clock::now() - began; };
+    {
+      std::lock_guard lock(mutex_);
+      say("O\r", since());
+    }
+    while (!stop.stop_requested()) {
+      std::vector<emulators::Telegram> out;
+      {
+        std::lock_guard lock(mutex_);
+        robot_.advance(since());
+        out = robot_.take_output();
+      }
+      for (const emulators::Telegram& telegram : out) {
+        const std::string line(telegram.bytes.begin(), telegram.bytes.end());
+        if (const auto frame = links::can::parse_slcan_frame(line.substr(0, line.size() - 1))) {
+          bus_.send(*frame, links::deadline_in(100ms));
+        }
+      }
+      if (const auto frame = bus_.receive(links::deadline_in(2ms))) {
+        std::lock_guard lock(mutex_);
+        say(links::can::slcan_frame_line(*frame), since());
+      }
+    }
+  }
+
+  links::can::SocketCanLink link_;
+  links::can::CanBus bus_;
+  std::mutex mutex_;
+  SegwayRmpEmulator robot_;
+  std::jthread thread_;
+};
+
+TEST(SegwayRmpSocketCan, TheRobotOnVcan0IsDrivenThroughSocketCan) {
+  const std::string reason = links::can::socketcan_unavailable_reason("vcan0");
+  if (!reason.empty()) GTEST_SKIP() << "no vcan0 here (" << reason << "); the slcan tests cover the driver";
+  RobotOnVcan robot;
+  ConfiguredDevices devices;
+  devices.load("position:0 ( driver \"segwayrmp\" canio \"socketcan\" device \"vcan0\" )\n");
+  core::Device& position = devices.device(protocol::kPositionCode);
+  ASSERT_TRUE(position.subscribe()) << devices.log.all();
+  ASSERT_TRUE(acked(ask(position, protocol::PositionPowerConfig{.request = protocol::kPositionMotorPowerReq,
+                                                                  .value = 1})));
+  EXPECT_TRUE(eventually(
+      [&] {
+        write_command(position, protocol::PositionCommand{.xspeed = 300});
+        return robot.with([](SegwayRmpEmulator& e) { return e.commanded_speed() > 0.29; });
+      },
+      5s));
+  EXPECT_TRUE(data_when<protocol::PositionData>(position, [](const auto& d) { return d.xpos > 50; }));
 }
 
 struct SegwayRmpVanishTest : SegwayRmpDriverTest {
