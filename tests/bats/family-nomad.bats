@@ -97,3 +97,17 @@ start_nomad() {
   [ "$status" -ne 0 ]
   [[ "$output" == *"no nomad:1 on port 6665"* ]]
 }
+
+@test "the emulated Nomad carries an emulated laser and sees the map with its sonar" {
+  laser="$BATS_TEST_TMPDIR/laser"
+  start_nomad sicklms200 --link "$laser" --map "$repo_root/data/maps/stage-cave.png"
+  grep -q "rides on the emulated robot" "$BATS_TEST_TMPDIR/emulate.err"
+  grep -qx "sicklms200 on $laser: laser:0 ( driver \"sicklms200\" port \"$laser\" )" "$BATS_TEST_TMPDIR/emulate.out"
+  run --separate-stderr timeout 60 "$player_drivers" run nomad "port=tcp:127.0.0.1:$nomad_port" -n 2 --format json
+  [ "$status" -eq 0 ]
+  # Walls in sight: some sonar reads short of its 255 inches (6477 mm).
+  [ "$(jq -s '[.[-1].data.sonar[] | select(. < 6477)] | length' <<<"$output")" -gt 0 ]
+  run --separate-stderr timeout 60 "$player_drivers" run sicklms200 "port=$laser" -n 1 --format json
+  [ "$status" -eq 0 ]
+  stop_cleanly "$emulator_pid"
+}

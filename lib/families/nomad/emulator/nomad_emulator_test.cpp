@@ -141,6 +141,25 @@ TEST(NomadEmulator, OdometryCarriesTheConfiguredError) {
   EXPECT_NEAR(client.robot.world_pose()->y, 2.0, 1e-9);
 }
 
+TEST(NomadEmulator, HeadingDriftAndNoiseFollowTheDistanceDrivenAndTheSeed) {
+  NomadEmulatorOptions options;
+  options.odometry_error.heading_drift_per_metre = 0.1;  // rad
+  options.odometry_error.translation_noise = 0.01;
+  options.odometry_error.seed = 7;
+  Client first(options);
+  Client second(options);
+  for (Client* client : {&first, &second}) {
+    client->ask(nomad::velocity(394, 0, 0));  // 1 m/s
+    client->wait(1s - 20ms);
+  }
+  const auto state = first.state();
+  const auto same = second.state();
+  EXPECT_NEAR(state.steering, 57, 2);  // 0.1 rad in tenths of a degree
+  EXPECT_EQ(state.steering, same.steering);
+  EXPECT_EQ(state.x, same.x);
+  EXPECT_NEAR(first.robot.true_pose().yaw, 0.0, 1e-9);
+}
+
 TEST(NomadEmulator, SensorsSeeTheMapAndAWallStopsTheBody) {
   // A wall 1 m ahead (x = 1.0 .. 1.1), free space elsewhere.
   grid::OccupancyGrid map(60, 60, 0.05, {-1.5, -1.5}, grid::CellState::free);
