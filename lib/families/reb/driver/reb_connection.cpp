@@ -56,7 +56,7 @@ void RebConnection::remove_device(core::Device& device) {
 
 std::vector<core::DriverCounter> RebConnection::protocol_counters() const {
   return {{"cycles", cycles_.load()}, {"missing_prompts", missing_prompts_.load()},
-          {"stray_lines", stray_lines_.load()}};
+          {"stray_lines", stray_lines_.load()}, {"noisy_lines", noisy_lines_.load()}};
 }
 
 // ---------------------------------------------------------------- the board
@@ -68,8 +68,10 @@ hw::Reply RebConnection::exchange(const hw::Command& command) {
                         .bytes = hw::encode(command),
                         .matcher =
                             [&](std::span<const std::uint8_t> telegram) {
-                              auto parsed = hw::parse_reply(framing::line_text(telegram));
-                              if (!parsed || parsed->letter != letter) return links::ReplyMatch::not_mine;
+                              const std::string_view line = framing::line_text(telegram);
+                              auto parsed = hw::find_reply(line, letter);
+                              if (!parsed) return links::ReplyMatch::not_mine;
+                              if (line.front() != letter) ++noisy_lines_;  // found behind line noise
                               reply = std::move(parsed);
                               return links::ReplyMatch::mine;
                             },
@@ -89,7 +91,11 @@ void RebConnection::await_prompt() {
   // The board takes the next command after its prompt (1.5 waited for it).
   const auto deadline = links::deadline_in(kPromptTimeout);
   while (auto telegram = exchanger_->next(deadline)) {
-    if (hw::is_prompt(framing::line_text(*telegram))) return;
+    const std::string_view line = framing::line_text(*telegram);
+    if (hw::is_prompt(line)) {
+      if (line.size() > 1) ++noisy_lines_;
+      return;
+    }
     ++stray_lines_;
   }
   ++missing_prompts_;
@@ -112,6 +118,7 @@ void RebConnection::start_session(links::ByteLink& link) {
   ir_attached_ = false;
   speeds_sent_.reset();
   position_started_ = false;
+  position_resumed_ = false;
   left_counter_.reset();
   right_counter_.reset();
   lost_.reset();
@@ -141,9 +148,10 @@ bool RebConnection::reconnect(links::ByteLink& link, Attempt /*attempt*/, const 
   } catch (const links::ExchangeError& e) {
     throw links::LinkError(links::LinkErrorKind::timed_out, options_.port, e.what());
   }
-  // The counters may have been reset with the board: the reported pose
-  // continues from where it was.
-  odometry_.restart_counters(odometry_.robot());
+  // The board may have been reset: the set-up again for a position device
+  // still there, keeping its mode and the pose it reported.
+  std::lock_guard lock(views_mutex_);
+  position_resumed_ = has(RebRole::position);
   return true;
 }
 

@@ -130,7 +130,8 @@ class RebConnection final : public hardware_driver::RobotConnection,
   std::atomic<ControlMode> mode_{ControlMode::direct_velocity};
   std::atomic<std::uint64_t> cycles_{0};
   std::atomic<std::uint64_t> missing_prompts_{0};
-  std::atomic<std::uint64_t> stray_lines_{0};
+  std::atomic<std::uint64_t> stray_lines_{0};  // lines that were neither the reply nor a prompt
+  std::atomic<std::uint64_t> noisy_lines_{0};  // a reply or prompt behind line noise, taken
 
   // --- the I/O thread's (and open()/close()'s while it is not running)
   std::unique_ptr<links::FramedReader> reader_;
@@ -138,6 +139,7 @@ class RebConnection final : public hardware_driver::RobotConnection,
   std::optional<std::string> lost_;  // a request found the board silent
   Clock::time_point next_cycle_{};
   bool position_started_ = false;   // the first position subscriber's set-up was sent
+  bool position_resumed_ = false;   // the set-up is owed again after a reconnection, not to a new subscriber
   std::optional<bool> ir_sent_;     // what Y last said this session
   bool ir_attached_ = false;        // an ir device was there at the last look
   bool motors_enabled_ = false;     // MOTOR_POWER

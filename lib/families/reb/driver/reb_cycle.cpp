@@ -43,6 +43,7 @@ void RebConnection::reconcile_subscriptions() {
     exchange_both(hw::set_speed, 0, 0);
     speeds_sent_ = hw::MotorSpeeds{};
     position_started_ = false;
+    position_resumed_ = false;
     motors_enabled_ = false;
   }
   const bool ir = has(RebRole::ir);
@@ -67,8 +68,12 @@ void RebConnection::start_position() {
   exchange(hw::speed_profile(hw::Motor::right, profile, profile));
   exchange(hw::speed_profile(hw::Motor::left, profile, profile));
   position_started_ = true;
+  if (std::exchange(position_resumed_, false)) return;
+  // A new subscriber: motors off, odometry at (0, 0, 0), the option's mode, as 1.5.
   motors_enabled_ = false;
   command_ = {};
+  odometry_ = {};
+  velocity_ = {};
   mode_ = heading_default_ ? ControlMode::heading : ControlMode::direct_velocity;
 }
 

@@ -55,7 +55,14 @@ std::optional<Reply> parse_reply(std::string_view line) {
   return Reply{split->first, std::move(split->second)};
 }
 
-bool is_prompt(std::string_view line) { return line == ":"; }
+std::optional<Reply> find_reply(std::string_view line, char letter) {
+  for (std::size_t at = line.find(letter); at != std::string_view::npos; at = line.find(letter, at + 1)) {
+    if (auto reply = parse_reply(line.substr(at))) return reply;
+  }
+  return std::nullopt;
+}
+
+bool is_prompt(std::string_view line) { return !line.empty() && line.back() == ':'; }
 
 char reply_letter(char command_letter) {
   return static_cast<char>(std::tolower(static_cast<unsigned char>(command_letter)));

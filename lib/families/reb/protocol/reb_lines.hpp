@@ -47,7 +47,10 @@ struct Reply {
 // A reply line's text without its terminator; nothing for the prompt, for
 // noise, or for values that are not integers.
 [[nodiscard]] std::optional<Reply> parse_reply(std::string_view line);
-// The prompt ":" the firmware writes after each reply.
+// The reply to a command answered with `letter` in a line that may begin
+// with line noise: the first place the letter starts a whole reply.
+[[nodiscard]] std::optional<Reply> find_reply(std::string_view line, char letter);
+// The prompt ":" the firmware writes after each reply (noise before it allowed).
 [[nodiscard]] bool is_prompt(std::string_view line);
 // The reply letter a command is answered with.
 [[nodiscard]] char reply_letter(char command_letter);

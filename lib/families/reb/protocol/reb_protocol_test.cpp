@@ -49,6 +49,11 @@ TEST(RebLines, ParsesReplies) {
   EXPECT_FALSE(parse_reply("H,2"));
   EXPECT_FALSE(parse_reply("h,12a"));
   EXPECT_TRUE(is_prompt(":"));
+  EXPECT_TRUE(is_prompt("\x13\xfe:"));  // noise before it
+  EXPECT_EQ(find_reply("\x7f\x01h,12", 'h'), (Reply{'h', {12}}));
+  EXPECT_EQ(find_reply("hh,-3", 'h'), (Reply{'h', {-3}}));
+  EXPECT_FALSE(find_reply("h,1x", 'h'));
+  EXPECT_FALSE(find_reply("e,1", 'h'));
   EXPECT_EQ(reply_text({'i', {360}}), "i,360");
   EXPECT_EQ(reply_letter('D'), 'd');
 }
