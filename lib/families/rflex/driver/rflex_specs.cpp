@@ -1,5 +1,4 @@
 // The seven driver specs, one per role (rflex.md table 1, manual §7.34), and
-// the driver of one device: a view onto the robot's RflexConnection.
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -7,6 +6,7 @@
 
 #include "core/shared_connection.hpp"
 #include "families/rflex/driver/rflex_connection.hpp"
+#include "families/rflex/driver/rflex_device_driver.hpp"
 #include "families/rflex/driver/rflex_drivers.hpp"
 #include "families/rflex/driver/rflex_options.hpp"
 #include "protocol/interfaces.hpp"
@@ -17,44 +17,6 @@ namespace {
 
 using protocol::Access;
 using rflex::RflexRole;
-
-class RflexDeviceDriver final : public core::Driver {
- public:
-  RflexDeviceDriver(RflexRole role, std::shared_ptr<rflex::RflexConnection> connection)
-      : role_(role), connection_(std::move(connection)) {}
-  ~RflexDeviceDriver() override {
-    if (use_) {
-      connection_->remove_device(device());
-      use_ = {};
-    }
-  }
-
-  void setup() override {
-    core::SharedConnection::Use use = connection_->attach();  // the first one opens the robot
-    connection_->add_device(role_, device());
-    use_ = std::move(use);
-  }
-  void shutdown() override {
-    if (!use_) return;
-    connection_->remove_device(device());
-    use_ = {};  // the last one stops the robot and closes the line
-  }
-  [[nodiscard]] bool runs_own_thread() const override { return true; }
-  [[nodiscard]] bool setup_may_block() const override { return true; }
-  core::RequestResult handle_request(const core::Request& request) override {
-    return connection_->handle_request(role_, request);
-  }
-  [[nodiscard]] std::vector<core::DriverCounter> counters() const override { return connection_->counters(); }
-  bool set_byte_trace(core::ByteTrace trace) override {
-    connection_->set_byte_trace(std::move(trace));
-    return true;
-  }
-
- private:
-  const RflexRole role_;
-  const std::shared_ptr<rflex::RflexConnection> connection_;
-  core::SharedConnection::Use use_;
-};
 
 core::DriverSpec make_spec(RflexRole role, std::uint16_t interface, std::string summary,
                            std::vector<std::string> requests, std::string example) {
@@ -67,7 +29,7 @@ core::DriverSpec make_spec(RflexRole role, std::uint16_t interface, std::string 
     auto connection = context.connections.get<rflex::RflexConnection>(
         rflex::connection_key(settings),
         [&] { return std::make_shared<rflex::RflexConnection>(settings, context.logger); });
-    return std::make_unique<RflexDeviceDriver>(role, std::move(connection));
+    return std::make_unique<rflex::RflexDeviceDriver>(role, std::move(connection));
   };
   // Each device has its own queue (1.5 shared one of length 1 between all seven).
   spec.limits = core::DeviceLimits{.request_queue = 8};
