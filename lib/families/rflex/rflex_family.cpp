@@ -61,9 +61,13 @@ std::optional<Identification> probe_rflex(const ProbeContext& line) {
       std::snprintf(volts, sizeof volts, "%.1f V", status->voltage / 100.0);
       return found(std::string("an RFLEX controller (battery ") + volts + (status->brake != 0 ? ", braked)" : ")"));
     }
-    // A controller still reporting from an earlier session: it answers too.
-    other_packets = true;
-    deadline = line.finish;
+    // A controller still reporting from an earlier session answers too; an
+    // echo of the request (a loopback plug, a modem) is no report.
+    if (hw::read_motion_report(*packet) || hw::read_sonar_report(*packet) || hw::read_dio_report(*packet) ||
+        hw::read_ir_report(*packet)) {
+      other_packets = true;
+      deadline = line.finish;
+    }
   }
   if (other_packets) return found("an RFLEX controller (reports, no status reply)");
   return std::nullopt;

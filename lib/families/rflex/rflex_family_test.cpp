@@ -5,7 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cstdint>
+#include <span>
+#include <stop_token>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "emulators/catalog/emulator_catalog.hpp"
 #include "emulators/runner/emulator_runner.hpp"
@@ -58,6 +64,21 @@ TEST(RflexFamily, ProbeFindsTheControllerAndItsBattery) {
 TEST(RflexFamily, ProbeFindsNothingOnASilentLine) {
   links::PseudoTerminal nobody;
   EXPECT_FALSE(probe(nobody.slave_path()).found);
+}
+
+// A line that sends back what it is sent (a loopback plug) is no controller.
+TEST(RflexFamily, ProbeDoesNotTakeAnEchoForAnAnswer) {
+  links::PseudoTerminal loopback;
+  std::jthread echoing([&loopback](std::stop_token stop) {
+    std::vector<std::uint8_t> buffer(256);
+    while (!stop.stop_requested()) {
+      const std::size_t got = loopback.read_some(buffer, links::deadline_in(std::chrono::milliseconds(50))).count;
+      if (got > 0) {
+        (void)loopback.write_all(std::span(buffer).first(got), links::deadline_in(std::chrono::milliseconds(200)));
+      }
+    }
+  });
+  EXPECT_FALSE(probe(loopback.slave_path()).found);
 }
 
 TEST(RflexFamily, TraceFramingCutsPacketsBothWays) {
