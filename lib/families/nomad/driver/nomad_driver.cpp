@@ -47,15 +47,15 @@ class NomadDriver final : public hardware_driver::SerialDeviceDriver {
 
   void serve(links::ByteLink& /*link*/, const core::Wakeup::Woken& /*woke*/) override {
     device().service_requests();  // none known: NACK, as 1.5
-    if (auto command = device().take_command()) {
-      velocity_ = nomad::velocity_words(protocol::decode<protocol::NomadCommand>(command->payload));
-      next_cycle_ = Clock::now();
-    }
+    if (take_new_command()) next_cycle_ = Clock::now();
     if (Clock::now() < next_cycle_) return;
     next_cycle_ = Clock::now() + kCyclePeriod;
     try {
-      const auto state = session_->cycle(velocity_.translation, velocity_.steering, velocity_.turret);
-      device().publish(protocol::encode(nomad::nomad_data(state)));
+      session_->send_velocity(velocity_.translation, velocity_.steering, velocity_.turret);
+      // One that came while VM was answered goes out before the state is
+      // asked, not a whole cycle later.
+      if (take_new_command()) session_->send_velocity(velocity_.translation, velocity_.steering, velocity_.turret);
+      device().publish(protocol::encode(nomad::nomad_data(session_->read_state())));
     } catch (const links::ExchangeError&) {
       throw;
     } catch (const links::LinkError&) {
@@ -63,6 +63,13 @@ class NomadDriver final : public hardware_driver::SerialDeviceDriver {
     } catch (const std::runtime_error& e) {
       throw hardware_driver::DeviceLost(e.what());
     }
+  }
+
+  bool take_new_command() {
+    auto command = device().take_command();
+    if (!command) return false;
+    velocity_ = nomad::velocity_words(protocol::decode<protocol::NomadCommand>(command->payload));
+    return true;
   }
 
   [[nodiscard]] Clock::time_point next_deadline() const override { return next_cycle_; }

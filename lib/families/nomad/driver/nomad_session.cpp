@@ -59,8 +59,11 @@ void NomadSession::start(std::int32_t client_pid, bool zero) {
   ask(nomad::speeds(nomad::kSetupSpeeds), timeouts_.reply);
 }
 
-nomad::RobotState NomadSession::cycle(std::int32_t translation, std::int32_t steering, std::int32_t turret) {
+void NomadSession::send_velocity(std::int32_t translation, std::int32_t steering, std::int32_t turret) {
   ask(nomad::velocity(translation, steering, turret), timeouts_.reply);
+}
+
+nomad::RobotState NomadSession::read_state() {
   const nomad::Message reply = ask(nomad::get_state(), timeouts_.reply);
   auto state = nomad::parse_state(reply);
   if (!state) {

@@ -27,8 +27,10 @@ class NomadSession {
   // CONNECT_ROBOT, CT, CONF_TM 5, ZR (unless `zero` is false), AC, SP.
   // Throws links::ExchangeError or std::runtime_error naming the step.
   void start(std::int32_t client_pid, bool zero);
-  // VM, then GS: the state after the command.
-  hardware::nomad::RobotState cycle(std::int32_t translation, std::int32_t steering, std::int32_t turret);
+  // VM: translation in 0.1 in/s, steering and turret in 0.1 deg/s.
+  void send_velocity(std::int32_t translation, std::int32_t steering, std::int32_t turret);
+  // GS: the robot's state. Throws std::runtime_error for a reply that is no state.
+  hardware::nomad::RobotState read_state();
   // VM 0 0 0, for shutdown.
   void stop_motion();
 
