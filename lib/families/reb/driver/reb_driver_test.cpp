@@ -26,7 +26,7 @@ using emulators::RebEmulator;
 using hardware::reb::Motor;
 
 const std::string kRobot =
-    "position:0 ( driver \"reb_position\" port \"$PORT\" subclass \"slow\" $EXTRA )\n"
+    "position:0 ( driver \"reb_position\" port \"$PORT\" $EXTRA )\n"
     "ir:0 ( driver \"reb_ir\" )\n"
     "power:0 ( driver \"reb_power\" )\n";
 
@@ -225,15 +225,15 @@ TEST(RebIrAndPower, VoltagesPosesPowerAndTheBatteryInDecivolts) {
 }
 
 TEST(RebOptions, TheFastUbotAndBadValuesAtTheirPlace) {
-  Robot fast("", {}, emulators::RebEmulatorOptions{.subclass = "fast"});
-  (void)fast;
-  ConfiguredDevices devices;
-  devices.load("position:0 ( driver \"reb_position\" port \"/dev/null\" subclass \"fast\" )\n");
-  EXPECT_EQ(dynamic_cast<drivers::reb::RebDeviceDriver&>(devices.device(protocol::kPositionCode).driver())
-                .connection()
-                .options()
-                .subclass,
-            "fast");
+  // The fast UBot's encoders: 7.92 pulses a mm, 100 mm/s is 8 pulses per 10 ms.
+  emulators::RebEmulatorOptions fast_board;
+  fast_board.subclass = "fast";
+  Robot fast("subclass \"fast\"", {}, fast_board);
+  ASSERT_TRUE(fast.position().subscribe()) << fast.devices.log.all();
+  EXPECT_EQ(fast.connection().options().subclass, "fast");
+  fast.motors_on();
+  fast.drive(100, 0);
+  EXPECT_TRUE(fast.board.wait_until([](RebEmulator& e) { return e.motor(Motor::left).speed == 8; }));
   ConfiguredDevices bad;
   try {
     bad.load("position:0 ( driver \"reb_position\" heading_control 3 )\n");
