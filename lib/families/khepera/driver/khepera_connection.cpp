@@ -57,7 +57,7 @@ hw::Message KheperaConnection::ask(const hw::Message& command, std::optional<std
        .bytes = hw::encode_command(command),
        .matcher =
            [&](std::span<const std::uint8_t> telegram) {
-             reply = hw::parse_reply_to(command.letter, framing::line_text(telegram), count);
+             reply = hw::find_reply_to(command.letter, framing::line_text(telegram), count);
              if (!reply) {
                ++stray_lines_;
                return links::ReplyMatch::not_mine;
@@ -65,7 +65,7 @@ hw::Message KheperaConnection::ask(const hw::Message& command, std::optional<std
              return links::ReplyMatch::mine;
            },
        .timeout = options_.reply_timeout,
-       .attempts = 2});
+       .attempts = 3});
   if (!outcome.replied() || !reply) throw hardware_driver::RobotLost(outcome.message);
   return *reply;
 }
@@ -84,11 +84,11 @@ void KheperaConnection::connect(links::ByteLink& link) {
          .bytes = hw::encode_command(hw::read_speed()),
          .matcher =
              [](std::span<const std::uint8_t> telegram) {
-               return hw::parse_reply_to(hw::letter::read_speed, framing::line_text(telegram), 2)
+               return hw::find_reply_to(hw::letter::read_speed, framing::line_text(telegram), 2)
                           ? links::ReplyMatch::mine
                           : links::ReplyMatch::not_mine;
              },
-         .timeout = std::min<links::LinkClock::duration>(options_.reply_timeout * 2, links::time_until(deadline)),
+         .timeout = std::min<links::LinkClock::duration>(options_.reply_timeout, links::time_until(deadline)),
          .attempts = 1});
     if (outcome.replied()) break;
     if (links::time_until(deadline) <= 0ms) {
@@ -159,8 +159,10 @@ void KheperaConnection::serve(links::ByteLink& /*link*/, const core::Wakeup::Wok
   serve_requests();
   if (lost_reason_) throw hardware_driver::RobotLost(*std::exchange(lost_reason_, std::nullopt));
   take_commands();
-  if (Clock::now() >= next_cycle_) {
-    next_cycle_ = Clock::now() + options_.cycle;
+  if (const auto now = Clock::now(); now >= next_cycle_) {
+    // Cycles keep their rate; one that fell behind is skipped, not crammed.
+    next_cycle_ += options_.cycle;
+    if (next_cycle_ <= now) next_cycle_ = now + options_.cycle;
     run_cycle();
     publish();
   }

@@ -16,7 +16,7 @@
 //  * every cycle_time: `D` again while a position device is there, `N`, `H`
 //    and `E`; then publishes odometry (integrated in the world frame,
 //    counter-clockwise positive: 1.5 did neither) and the IR readings;
-//  * a reply missing after two tries loses the robot (RobotLost): one log
+//  * a reply missing after three tries loses the robot (RobotLost): one log
 //    line, the devices unavailable, `E` tried in the background;
 //  * when the last device leaves: `D,0,0` before the line closes (1.5 left
 //    the robot driving).
@@ -85,7 +85,7 @@ class KheperaConnection final : public hardware_driver::RobotConnection {
   [[nodiscard]] std::vector<core::DriverCounter> protocol_counters() const override;
   void start_session();
   // One command and its reply with `count` values; throws RobotLost when
-  // none came after two tries.
+  // none came after three tries.
   hardware::khepera::Message ask(const hardware::khepera::Message& command, std::optional<std::size_t> count);
 
   // --- the cycle (khepera_cycle.cpp), with views_mutex_ held

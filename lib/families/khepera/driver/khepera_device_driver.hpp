@@ -28,6 +28,8 @@ class KheperaDeviceDriver final : public core::Driver {
   [[nodiscard]] std::vector<core::DriverCounter> counters() const override;
   bool set_byte_trace(core::ByteTrace trace) override;
 
+  [[nodiscard]] KheperaConnection& connection() const { return *connection_; }
+
  private:
   [[nodiscard]] KheperaRole role() const;
 

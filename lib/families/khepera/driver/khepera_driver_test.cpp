@@ -321,26 +321,32 @@ TEST_F(KheperaReplugTest, ARobotUnpluggedAndBackIsFoundAgain) {
 struct KheperaNoisyLineTest : KheperaDriverTest {
   static emulators::FaultPlan noisy() {
     emulators::FaultPlan plan;
-    plan.garbage = 0.1;
-    plan.truncate = 0.05;
-    plan.drop = 0.002;
+    plan.garbage = 0.2;
+    plan.truncate = 0.03;
+    plan.drop = 0.001;
     plan.bad_checksum = 1.0;  // replies carry none: nothing to corrupt
     return plan;
   }
   KheperaNoisyLineTest() : KheperaDriverTest({.tcp = false, .symlink = {}, .faults = noisy()}) {}
 };
 
-// Garbage, cut replies and lost bytes: the reply is asked again, stray lines
-// counted, and the robot never counted lost.
+// Garbage, cut replies and lost bytes: a reply is found behind the noise on
+// its line, one cut short or lost is asked again, and the robot is never
+// counted lost.
 TEST_F(KheperaNoisyLineTest, NoiseCutAndLostRepliesAreAskedAgain) {
   start();
   motors_on();
   write_command(position(), protocol::PositionCommand{.xspeed = 50});
   EXPECT_TRUE(data_when<protocol::PositionData>(position(), [](const auto& d) { return d.xpos > 40; }, 10s))
       << devices.log.all();
-  const auto stats = robot.runner().stats().faults;
-  EXPECT_GT(stats.garbage_runs + stats.truncated, 3u);
-  EXPECT_GT(counter(position().driver(), "stray_lines") + counter(position().driver(), "retries"), 0u);
+  // Until many replies went through the faults, the data still flowing.
+  EXPECT_TRUE(eventually(
+      [&] {
+        const auto faults = robot.runner().stats().faults;
+        return faults.garbage_runs + faults.truncated > 20;
+      },
+      30s));
+  EXPECT_TRUE(more_data(position(), 3)) << devices.log.all();
   EXPECT_EQ(counter(position().driver(), "robot_lost"), 0u) << devices.log.all();
 }
 

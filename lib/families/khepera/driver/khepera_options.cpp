@@ -41,9 +41,10 @@ core::OptionSchema make_robot_schema() {
           .aliases({"scale"})
           .doc("geometry (GET_GEOM, IR poses) and IR ranges are reported multiplied by this, as in 1.5, so the "
                "tiny robot shows at a useful size; odometry is never scaled (the manual's name: scale)"),
-      OptionSpec::number("reply_timeout", 0.1, 0.01, 5.0)
+      OptionSpec::number("reply_timeout", 0.2, 0.01, 5.0)
           .unit("s")
-          .doc("how long each command waits for its reply (1.5 read once after 10 ms) (playerkit)"),
+          .doc("how long each command waits for its reply, asked three times before the robot counts as lost "
+               "(1.5 read once after 10 ms) (playerkit)"),
       OptionSpec::number("cycle_time", 0.05, 0.01, 1.0)
           .unit("s")
           .doc("one round of speed, proximity, counters and speeds every so long (1.5: as fast as the line "

@@ -31,7 +31,7 @@ struct KheperaRobotOptions {
   // Geometry (GET_GEOM, the IR poses) and IR ranges are multiplied by this,
   // as in 1.5, so that the tiny robot shows at a useful size; odometry never.
   double scale = 10.0;
-  std::chrono::milliseconds reply_timeout{100};
+  std::chrono::milliseconds reply_timeout{200};
   std::chrono::milliseconds cycle{50};
   std::chrono::milliseconds connect_timeout{2000};
 

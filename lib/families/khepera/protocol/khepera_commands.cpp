@@ -60,6 +60,14 @@ std::optional<Message> parse_reply_to(char command, std::string_view text, std::
   return reply;
 }
 
+std::optional<Message> find_reply_to(char command, std::string_view text, std::optional<std::size_t> count) {
+  const char expected = static_cast<char>(std::tolower(static_cast<unsigned char>(command)));
+  for (std::size_t at = text.find(expected); at != std::string_view::npos; at = text.find(expected, at + 1)) {
+    if (auto reply = parse_reply_to(command, text.substr(at), count)) return reply;
+  }
+  return std::nullopt;
+}
+
 framing::LineOptions reply_line_options() {
   return {.end = framing::LineEnd::cr_or_lf,
           .max_length = kLongestLine,

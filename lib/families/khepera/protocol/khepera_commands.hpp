@@ -63,6 +63,12 @@ inline constexpr std::size_t kLongestLine = 200;
 [[nodiscard]] std::optional<Message> parse_reply_to(char command, std::string_view text,
                                                     std::optional<std::size_t> count);
 
+// The same, behind noise on its line (bytes of a noisy cable land inside
+// lines, where no line format can tell them from text): the reply is the
+// last part of the line that reads as one.
+[[nodiscard]] std::optional<Message> find_reply_to(char command, std::string_view text,
+                                                   std::optional<std::size_t> count);
+
 // Replies end in CR LF, commands in LF; both are read as lines ended by CR
 // or LF (a canonical tty kept the CR as data: it never matters here), and
 // the empty lines a start-up CR LF leaves are noise.

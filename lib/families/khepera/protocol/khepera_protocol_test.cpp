@@ -36,6 +36,13 @@ TEST(KheperaCommands, ParsesRepliesToTheirCommand) {
   EXPECT_EQ(parse_line("D,+5,-5\n"), (Message{'D', {5, -5}}));
 }
 
+TEST(KheperaCommands, FindsARepliesBehindNoise) {
+  EXPECT_EQ(find_reply_to('E', "\x93z,e#e,8,-8", 2), (Message{'e', {8, -8}}));
+  EXPECT_EQ(find_reply_to('H', "h,1,2", 2), (Message{'h', {1, 2}}));
+  EXPECT_FALSE(find_reply_to('E', "xxe,8", 2));
+  EXPECT_FALSE(find_reply_to('E', "e,8,-8junk", 2));  // noise after it: no telling what was lost
+}
+
 TEST(KheperaUnits, SpeedsAreTheCommandedOnes) {
   const WheelGeometry geometry;
   // 100 mm/s is 1 mm per 10 ms, 12 pulses (1.5 sent trunc(100 / 12) = 8).
