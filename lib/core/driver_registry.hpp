@@ -53,6 +53,11 @@ struct DriverDoc {
   // validates a section against it before the factory runs, and the tools
   // document it. Empty for drivers that read their options on their own.
   OptionSchema schema{};
+  // Set for a driver whose name is known but which cannot run in any build
+  // (rwi_*: RWI's Mobility middleware cannot be had): why, and what to use
+  // instead. A configuration naming it is refused at the driver's name with
+  // this text, before its options are read or its factory called.
+  std::string unavailable{};
 
   // The schema's rows when there is one, else the hand-written ones.
   [[nodiscard]] std::vector<OptionDoc> option_rows() const { return schema.empty() ? options : schema.docs(); }

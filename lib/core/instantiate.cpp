@@ -38,6 +38,12 @@ void instantiate_devices(const config::ConfigFile& config, const DriverRegistry&
       throw config::ConfigError(declaration.where,
                                 "driver '" + declaration.driver + "' is not available");
     }
+    if (!spec->doc.unavailable.empty()) {
+      const config::Property* named = config.section(declaration.section).property("driver");
+      const bool written = named != nullptr && !named->values.empty();
+      throw config::ConfigError(written ? named->values.front().where : declaration.where,
+                                "driver '" + spec->name + "' cannot run: " + spec->doc.unavailable);
+    }
     const auto& codes = spec->interfaces;
     if (std::find(codes.begin(), codes.end(), declaration.address.interface) == codes.end()) {
       throw config::ConfigError(declaration.where, "driver '" + spec->name +

@@ -98,6 +98,26 @@ TEST_F(InstantiateFixture, FactoryFailureBecomesAConfigErrorAtTheSection) {
   }
 }
 
+TEST_F(InstantiateFixture, AnUnavailableDriverIsRefusedAtItsNameWithItsReason) {
+  bool made = false;
+  DriverSpec spec{"gone", {protocol::kPositionCode}, Access::kAll,
+                  [&made](const DriverContext&) -> std::unique_ptr<Driver> {
+                    made = true;
+                    return nullptr;
+                  },
+                  {}, ""};
+  spec.doc.unavailable = "its middleware is lost; use \"other\"";
+  registry.add(spec);
+  const auto config = load("position:0\n(\n  name \"B21R\"\n  driver \"gone\"\n)\n");
+  try {
+    instantiate_devices(config, registry, table, clock, logger);
+    FAIL() << "expected a ConfigError";
+  } catch (const config::ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()), "test.cfg:4:10: driver 'gone' cannot run: its middleware is lost; use \"other\"");
+  }
+  EXPECT_FALSE(made);
+}
+
 TEST_F(InstantiateFixture, InterfaceLimitsOverrideTheDriversLimitsForThatInterfaceOnly) {
   DriverSpec spec{"counting", {protocol::kLaserCode, protocol::kSonarCode}, Access::kRead,
                   [this](const DriverContext&) -> std::unique_ptr<Driver> {
