@@ -34,6 +34,7 @@ using er1::WheelSpeeds;
 // give the same odometry without keeping a core busy.
 constexpr auto kCyclePeriod = 20ms;
 constexpr auto kDebugPeriod = 1s;
+constexpr auto kSpeedWindow = 60ms;
 constexpr int kBaud = 230400;
 constexpr double kFastestPlausibleWheel = 2.0;  // m/s: four times what 1.5 would command
 constexpr int kImplausibleReadings = 3;
@@ -63,7 +64,9 @@ class Er1PositionDriver final : public hardware_driver::SerialDeviceDriver, priv
     // The reset zeroed the counts: the reported pose carries on from where it was.
     if (recovering) odometry_.restart_counters({});
     sent_ = WheelSpeeds{};
-    last_reading_ = Clock::now();
+    last_reading_ = speed_since_ = Clock::now();
+    travel_since_ = turn_since_ = 0.0;
+    velocity_ = {};
     next_reading_ = last_reading_ + kCyclePeriod;
   }
 
@@ -106,12 +109,15 @@ class Er1PositionDriver final : public hardware_driver::SerialDeviceDriver, priv
 
   // --- robot -> Player
   void publish_reading() {
+    const auto asked = Clock::now();
     const er1::WheelCounts counts = rcm_->counts();
     const auto now = Clock::now();
+    // When the counts were taken, as near as can be told.
+    const auto taken = asked + (now - asked) / 2;
     next_reading_ = std::max(next_reading_ + kCyclePeriod, now);
     const double left = er1::wheel_travel(counts.left, last_counts_.left);
     const double right = er1::wheel_travel(counts.right, last_counts_.right);
-    const double seconds = std::chrono::duration<double>(now - last_reading_).count();
+    const double seconds = std::chrono::duration<double>(taken - last_reading_).count();
     // A count cut from line noise would throw the pose far away: a wheel
     // that seems to have outrun the robot is read again next cycle (a few
     // times; after that the counts are taken as they are).
@@ -123,15 +129,23 @@ class Er1PositionDriver final : public hardware_driver::SerialDeviceDriver, priv
     }
     implausible_in_a_row_ = 0;
     last_counts_ = counts;
-    last_reading_ = now;
+    last_reading_ = taken;
     const double turn = (right - left) / settings_.axle;
     const double distance = (left + right) / 2.0;
     odometry_.drive(distance, turn);
-    const geometry::Pose2 velocity =
-        seconds > 0.0 ? geometry::Pose2{distance / seconds, 0.0, turn / seconds} : geometry::Pose2{};
+    // Speeds over at least kSpeedWindow: two readings a scheduling hiccup
+    // apart would divide a few ticks by almost nothing.
+    travel_since_ += distance;
+    turn_since_ += turn;
+    const double window = std::chrono::duration<double>(taken - speed_since_).count();
+    if (window >= std::chrono::duration<double>(kSpeedWindow).count()) {
+      velocity_ = {travel_since_ / window, 0.0, turn_since_ / window};
+      travel_since_ = turn_since_ = 0.0;
+      speed_since_ = taken;
+    }
     const geometry::Pose2 pose = odometry_.reported();
     device().publish(
-        protocol::encode(interfaces::position_data(pose, velocity, false, interfaces::HeadingRange::from_0_to_360)));
+        protocol::encode(interfaces::position_data(pose, velocity_, false, interfaces::HeadingRange::from_0_to_360)));
     if (settings_.debug && now >= next_debug_line_) {
       char line[160];
       std::snprintf(line, sizeof line, ": odometry x %.3f m, y %.3f m, yaw %.1f deg; wheels %.0f, %.0f mm/s", pose.x,
@@ -170,6 +184,10 @@ class Er1PositionDriver final : public hardware_driver::SerialDeviceDriver, priv
   int implausible_in_a_row_ = 0;
   std::atomic<std::uint64_t> implausible_readings_{0};
   Clock::time_point last_reading_{};
+  Clock::time_point speed_since_{};
+  double travel_since_ = 0.0;  // m since speed_since_
+  double turn_since_ = 0.0;    // rad since speed_since_
+  geometry::Pose2 velocity_;
   Clock::time_point next_reading_{};
   Clock::time_point next_debug_line_{};
 };

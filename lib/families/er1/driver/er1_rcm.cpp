@@ -1,5 +1,6 @@
 #include "families/er1/driver/er1_rcm.hpp"
 
+#include <chrono>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -81,8 +82,13 @@ std::int32_t Rcm::count(rcm::Motor motor) {
 }
 
 WheelCounts Rcm::counts() {
-  const std::int32_t port0 = count(rcm::Motor::port0);
+  std::int32_t port0 = count(rcm::Motor::port0);
+  const auto between = std::chrono::steady_clock::now();
   const std::int32_t port1 = count(rcm::Motor::port1);
+  // Counts read far apart in time (a reply asked for again) make a robot
+  // driving straight seem to turn and turn back, and the pose drifts
+  // sideways: port 0 is read again, right after port 1.
+  if (std::chrono::steady_clock::now() - between > kCountSkew) port0 = count(rcm::Motor::port0);
   const std::int32_t left = wiring_.left == rcm::Motor::port0 ? port0 : port1;
   const std::int32_t right = wiring_.left == rcm::Motor::port0 ? port1 : port0;
   return {.left = static_cast<std::int32_t>(0u - static_cast<std::uint32_t>(left)), .right = right};

@@ -42,8 +42,10 @@ class Rcm {
   // 1.5's full stop of both motors, then both speeds 0.
   void stop();
 
-  static constexpr std::chrono::milliseconds kReplyTimeout{100};
+  static constexpr std::chrono::milliseconds kReplyTimeout{250};
   static constexpr int kAttempts = 3;
+  // Longer than a count's exchange takes when nothing goes wrong.
+  static constexpr std::chrono::milliseconds kCountSkew{20};
 
  private:
   void send_all(const std::vector<rcm::Bytes>& commands);
