@@ -153,15 +153,22 @@ void RebConnection::poll() {
   next_cycle_ = Clock::now() + kCyclePeriod;
   // Heading control steers by the odometry: the set-points follow it.
   if (mode_ == ControlMode::heading) send_motor_speeds(false);
-  if (has(RebRole::ir)) ir_readings_ = exchange(hw::read_ir()).values;
+  // A command that arrives meanwhile goes out after the exchange under way,
+  // not after the whole poll.
+  if (has(RebRole::ir)) {
+    ir_readings_ = exchange(hw::read_ir()).values;
+    take_commands();
+  }
   if (has(RebRole::power)) {
     const hw::Reply reply = exchange(hw::read_analog(hw::kBatteryChannel));
     if (!reply.values.empty()) battery_reading_ = reply.values.front();
+    take_commands();
   }
   if (position_started_) {
     if (mode_ == ControlMode::position) {
       const hw::Reply status = exchange(hw::read_motion_status(hw::Motor::right));
       on_target_ = !status.values.empty() && status.values.front() == 1;
+      take_commands();
     }
     read_odometry();
   }
