@@ -93,6 +93,23 @@ TEST_F(KheperaDriverTest, VelocitiesAreHonouredInTheInterfacesUnits) {
   EXPECT_EQ(speeds(), (WheelSpeeds{0, 0}));
 }
 
+TEST_F(KheperaDriverTest, EncoderResolutionSetsThePulsesAndTheOdometry) {
+  start("encoder_res 0.1");
+  motors_on();
+  // 100 mm/s at 0.1 mm a pulse: 10 pulses per 10 ms.
+  write_command(position(), protocol::PositionCommand{.xspeed = 100});
+  EXPECT_TRUE(robot.wait_until([](KheperaEmulator& e) { return e.speeds() == WheelSpeeds{10, 10}; }));
+  // The emulated robot counts 12 pulses a millimetre: the odometry reads
+  // what the configured resolution says, 1.2 x the truth.
+  ASSERT_TRUE(data_when<protocol::PositionData>(position(), [](const auto& d) { return d.xpos > 60; }));
+  write_command(position(), protocol::PositionCommand{});
+  ASSERT_TRUE(robot.wait_until([](KheperaEmulator& e) { return e.speeds() == WheelSpeeds{}; }));
+  const auto truth = robot.with([](KheperaEmulator& e) { return e.true_pose(); });
+  const auto data = data_when<protocol::PositionData>(position(), [](const auto& d) { return d.xspeed == 0; });
+  ASSERT_TRUE(data);
+  EXPECT_NEAR(data->xpos, truth.x * 1000.0 * 1.2, 2.0);
+}
+
 TEST_F(KheperaDriverTest, OdometryFollowsTheRobotInTheWorldFrame) {
   start();
   motors_on();
@@ -248,7 +265,7 @@ TEST_F(KheperaDriverTest, MoreSensorsThanTheDefaultTakeTheirPosesFromTheConfigur
   EXPECT_EQ(data->range_count, 8);
   EXPECT_EQ(data->ranges[0], 10);  // 10 x 1 x 1^b
   EXPECT_TRUE(more_data(ir(), 3));
-  EXPECT_EQ(counter(ir().driver(), "robot_lost"), 0u);
+  EXPECT_EQ(counter(ir().driver(), "robot_lost"), 0u) << devices.log.all();
 }
 
 TEST_F(KheperaDriverTest, RefusesTheSubscriptionWhenNothingAnswers) {
@@ -276,6 +293,24 @@ TEST_F(KheperaSilentStartTest, ASilentRobotIsAClearErrorWithinTheTimeout) {
   EXPECT_FALSE(position().subscribe());
   EXPECT_LT(std::chrono::steady_clock::now() - started, 3s);
   EXPECT_FALSE(devices.log.first_with({"no Khepera answered E"}).empty()) << devices.log.all();
+}
+
+struct KheperaSlowStartTest : KheperaDriverTest {
+  KheperaSlowStartTest() : KheperaDriverTest({.tcp = false, .symlink = {}, .faults = slow()}) {}
+  static emulators::FaultPlan slow() {
+    emulators::FaultPlan plan;
+    plan.slow_start = std::chrono::milliseconds(800);
+    return plan;
+  }
+};
+
+// A robot deaf for a while after the port opens: E is asked again until it
+// answers, within connect_timeout.
+TEST_F(KheperaSlowStartTest, ARobotSlowToWakeIsWaitedFor) {
+  const auto opened = std::chrono::steady_clock::now();
+  start();
+  EXPECT_GT(std::chrono::steady_clock::now() - opened, 600ms);
+  EXPECT_TRUE(next_data<protocol::PositionData>(position())) << devices.log.all();
 }
 
 struct KheperaVanishTest : KheperaDriverTest {
