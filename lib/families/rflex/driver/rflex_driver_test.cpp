@@ -219,5 +219,16 @@ TEST(RflexDriver, TheManualsSonarPoseOrderAndOneRobotFromEverySection) {
   EXPECT_EQ(devices.counter(devices.sonar(), "motion_reports"), devices.counter(devices.power(), "motion_reports"));
 }
 
+TEST(RflexDriver, TheRobotsJoystickDrivesWhileItsButtonIsHeld) {
+  EmulatedRflex robot;
+  RflexDevices devices(robot.port(), b21r_config("rflex_joystick 1 rflex_joy_pos_ratio 2 rflex_joy_ang_ratio 0"));
+  ASSERT_TRUE(devices.position().subscribe()) << devices.log.all();
+  robot.with([](RflexEmulator& e) {
+    e.hold_joystick({0, 0, 100, 1});  // y 100, button 0 held: 200 mm/s
+    return 0;
+  });
+  EXPECT_TRUE(robot.wait_until([](RflexEmulator& e) { return e.translation_command() == 200 * 103; }));
+}
+
 }  // namespace rflex_driver_test
 }  // namespace playerkit::drivers

@@ -138,7 +138,9 @@ void RflexEmulator::execute(const hw::Packet& packet) {
     return;
   }
   if (packet.port == hw::port::joystick && packet.opcode == hw::opcode::jstk_get_state) {
-    send(hw::joystick_state({timestamp(), 0, 0, 0}, 0));  // nobody holds the button
+    hw::JoystickState state = joystick_;
+    state.timestamp = timestamp();
+    send(hw::joystick_state(state, 0));
   }
 }
 

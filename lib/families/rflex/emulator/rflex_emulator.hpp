@@ -75,6 +75,8 @@ class RflexEmulator final : public DeviceEmulator {
   [[nodiscard]] const RflexEmulatorOptions& options() const { return options_; }
   // A bump panel pressed by hand (tests), or released.
   void press_bumper(int panel, std::uint16_t corners);
+  // The robot's joystick as JSTK_GET_STATE reports it (tests).
+  void hold_joystick(const hardware::rflex::JoystickState& state) { joystick_ = state; }
 
  private:
   void execute(const hardware::rflex::Packet& packet);
@@ -112,6 +114,7 @@ class RflexEmulator final : public DeviceEmulator {
   std::vector<std::optional<std::uint16_t>> pressed_by_hand_;
   bool sonar_on_ = false;
   bool ir_on_ = false;
+  hardware::rflex::JoystickState joystick_;  // nobody holds the button
 };
 
 }  // namespace playerkit::emulators::rflex
