@@ -33,12 +33,12 @@ class Cerebellum {
   // odometry reading and the start-up accelerations. Throws on failure.
   hw::OdometryReading start();
 
-  // A reply the robot has no reason to send.
-  static constexpr std::chrono::milliseconds kReplyTimeout{100};
+  // The robot answers at once; a loaded host may not read it for a while.
+  static constexpr std::chrono::milliseconds kReplyTimeout{200};
   // Sends of one message before the robot counts as gone.
   static constexpr int kAttempts = 3;
   // INIT's: a second in all.
-  static constexpr int kFirstAttempts = 10;
+  static constexpr int kFirstAttempts = 5;
 
  private:
   // The reply (ACK first); nothing when the robot NACKed and never ACKed.
