@@ -145,10 +145,16 @@ class RebConnection final : public hardware_driver::RobotConnection,
   bool motors_enabled_ = false;     // MOTOR_POWER
   protocol::PositionCommand command_;
   std::optional<hardware::reb::MotorSpeeds> speeds_sent_;
-  // Odometry: the counters as last read (nothing: the next reading is a new baseline).
-  std::optional<std::int32_t> left_counter_;
-  std::optional<std::int32_t> right_counter_;
-  Clock::time_point counters_read_at_{};
+  // Odometry: the counters as last read, each when its reply came (nothing:
+  // the next reading is a new baseline). The two are read one exchange
+  // apart, so the right one is brought to the left one's time.
+  struct CounterReading {
+    std::int32_t value = 0;
+    Clock::time_point at{};
+  };
+  std::optional<CounterReading> left_counter_;
+  std::optional<CounterReading> right_counter_;
+  double right_lag_ = 0.0;  // pulses: the right counter at the left reading's time, minus its reading
   interfaces::OdometryIntegrator odometry_;
   geometry::Pose2 velocity_;  // m/s, 0, rad/s
   bool on_target_ = false;

@@ -80,9 +80,10 @@ void RebConnection::start_position() {
 void RebConnection::zero_counters() {
   exchange(hw::set_position(hw::Motor::left, 0));
   exchange(hw::set_position(hw::Motor::right, 0));
-  left_counter_ = 0;
-  right_counter_ = 0;
-  counters_read_at_ = Clock::now();
+  const Clock::time_point now = Clock::now();
+  left_counter_ = CounterReading{0, now};
+  right_counter_ = CounterReading{0, now};
+  right_lag_ = 0.0;
 }
 
 void RebConnection::serve_requests() {
@@ -176,28 +177,41 @@ void RebConnection::poll() {
 
 void RebConnection::read_odometry() {
   const hw::Reply left = exchange(hw::read_position(hw::Motor::left));
+  const Clock::time_point left_at = Clock::now();
   const hw::Reply right = exchange(hw::read_position(hw::Motor::right));
+  const Clock::time_point right_at = Clock::now();
   if (left.values.empty() || right.values.empty()) return;
-  const Clock::time_point now = Clock::now();
-  const std::int32_t left_now = left.values.front();
-  const std::int32_t right_now = right.values.front();
+  const CounterReading left_now{left.values.front(), left_at};
+  const CounterReading right_now{right.values.front(), right_at};
   if (left_counter_ && right_counter_) {
-    // 32-bit counters: the difference wraps with them. The right motor counts backwards.
+    // 32-bit counters: the difference wraps with them.
     const auto step = [](std::int32_t now_value, std::int32_t before) {
       return static_cast<std::int32_t>(static_cast<std::uint32_t>(now_value) - static_cast<std::uint32_t>(before));
     };
-    const double left_mm = step(left_now, *left_counter_) / params_.pulses_per_mm;
-    const double right_mm = -step(right_now, *right_counter_) / params_.pulses_per_mm;
+    const auto seconds = [](Clock::duration d) { return std::chrono::duration<double>(d).count(); };
+    // The right counter moved on while the left one's reply came back: a
+    // robot driving straight would seem to turn at every start and stop.
+    const double right_step = step(right_now.value, right_counter_->value);
+    const double span = seconds(right_now.at - right_counter_->at);
+    const double share = span > 0.0 ? std::clamp(seconds(left_now.at - right_counter_->at) / span, 0.0, 1.0) : 1.0;
+    const double right_at_left_time = right_step * share;
+    const double left_pulses = step(left_now.value, left_counter_->value);
+    const double right_pulses = right_at_left_time - right_lag_;
+    right_lag_ = right_at_left_time - right_step;
+    // The right motor counts backwards.
+    const double left_mm = left_pulses / params_.pulses_per_mm;
+    const double right_mm = -right_pulses / params_.pulses_per_mm;
     const double distance = (left_mm + right_mm) / 2.0 / 1000.0;
     const double turn = (right_mm - left_mm) / params_.axle_length_mm;
     odometry_.drive(distance, turn);
-    // Real elapsed time: 1.5 divided by whole 10 ms units, zero for a fast loop.
-    const double seconds = std::chrono::duration<double>(now - counters_read_at_).count();
-    if (seconds > 0.0) velocity_ = {distance / seconds, 0.0, turn / seconds};
+    // Real elapsed time: 1.5 divided by whole 10 ms units, by zero for a fast loop.
+    const double elapsed = seconds(left_now.at - left_counter_->at);
+    if (elapsed > 0.0) velocity_ = {distance / elapsed, 0.0, turn / elapsed};
+  } else {
+    right_lag_ = 0.0;
   }
   left_counter_ = left_now;
   right_counter_ = right_now;
-  counters_read_at_ = now;
 }
 
 void RebConnection::publish() {

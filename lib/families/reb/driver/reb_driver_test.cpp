@@ -119,7 +119,10 @@ TEST(RebPosition, DrivesAsCommandedAndItsOdometryFollowsTheTruePose) {
   });
   ASSERT_TRUE(data);
   EXPECT_NEAR(data->xpos, truth.x * 1000.0, 3.0);
-  EXPECT_NEAR(data->ypos, 0, 3);
+  // The two wheels' set-points go one after the other: under load the robot
+  // veers a little at each start and stop, and the odometry with it.
+  EXPECT_NEAR(data->ypos, truth.y * 1000.0, 3.0);
+  EXPECT_NEAR(truth.y, 0.0, 0.03);
   // Velocities in the interface's units: 100 mm/s is about 100 mm/s (24 pulses / 10 ms = 98.6).
   robot.drive(100, 0);
   const auto moving = data_when<protocol::PositionData>(robot.position(), [](const protocol::PositionData& d) {
@@ -131,7 +134,7 @@ TEST(RebPosition, DrivesAsCommandedAndItsOdometryFollowsTheTruePose) {
   const auto turned = data_when<protocol::PositionData>(robot.position(), [](const protocol::PositionData& d) {
     return d.yaw >= 60 && d.yaw < 180;
   });
-  ASSERT_TRUE(turned && turned->yaw >= 60) << (turned ? turned->yaw : -1);
+  ASSERT_TRUE(turned && turned->yaw >= 60) << (turned ? turned->yaw : -1) << robot.devices.log.all();
   robot.drive(0, 0);
 }
 
