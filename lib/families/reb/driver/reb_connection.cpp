@@ -119,8 +119,6 @@ void RebConnection::start_session(links::ByteLink& link) {
   speeds_sent_.reset();
   position_started_ = false;
   position_resumed_ = false;
-  left_counter_.reset();
-  right_counter_.reset();
   lost_.reset();
   next_cycle_ = Clock::now();
   session_up_ = true;
@@ -133,6 +131,8 @@ void RebConnection::connect(links::ByteLink& link) {
     throw core::DriverError(label() + ": the board does not answer (LPRSerCom at 38400 baud 8N2?): " + e.what());
   }
   // A fresh start: what earlier subscriptions set no longer holds.
+  left_counter_.reset();
+  right_counter_.reset();
   motors_enabled_ = false;
   command_ = {};
   odometry_ = {};

@@ -59,6 +59,9 @@ void RebConnection::reconcile_subscriptions() {
 void RebConnection::start_position() {
   exchange_both(hw::set_speed, 0, 0);
   speeds_sent_ = hw::MotorSpeeds{};
+  // Back after a gap: what the wheels did meanwhile counts, unless the board
+  // was reset (read_odometry() refuses a step no wheel could make).
+  if (position_resumed_) read_odometry();
   zero_counters();
   exchange(hw::speed_pid(hw::Motor::right, 1000, 0, 10));
   exchange(hw::speed_pid(hw::Motor::left, 1000, 0, 10));
@@ -192,6 +195,15 @@ void RebConnection::read_odometry() {
     // The right counter moved on while the left one's reply came back: a
     // robot driving straight would seem to turn at every start and stop.
     const double right_step = step(right_now.value, right_counter_->value);
+    // Faster than any wheel turns: the counters restarted (a board reset), not motion.
+    const double most = 2.0 * params_.max_wheel_speed_mm_s * params_.pulses_per_mm *
+                            seconds(right_now.at - left_counter_->at) + 100.0;
+    if (std::abs(step(left_now.value, left_counter_->value)) > most || std::abs(right_step) > most) {
+      left_counter_ = left_now;
+      right_counter_ = right_now;
+      right_lag_ = 0.0;
+      return;
+    }
     const double span = seconds(right_now.at - right_counter_->at);
     const double share = span > 0.0 ? std::clamp(seconds(left_now.at - right_counter_->at) / span, 0.0, 1.0) : 1.0;
     const double right_at_left_time = right_step * share;
