@@ -36,7 +36,7 @@ class Cerebellum {
   // The robot answers at once; a loaded host may not read it for a while.
   static constexpr std::chrono::milliseconds kReplyTimeout{200};
   // Sends of one message before the robot counts as gone.
-  static constexpr int kAttempts = 3;
+  static constexpr int kAttempts = 4;
   // INIT's: a second in all.
   static constexpr int kFirstAttempts = 5;
 

@@ -41,7 +41,7 @@ class TrogdorDriver final : public hardware_driver::SerialDeviceDriver, private 
 
  private:
   // --- the kit's hooks
-  void start_device(links::ByteLink& link, bool /*recovering*/) override {
+  void start_device(links::ByteLink& link, bool recovering) override {
     robot_ = std::make_unique<Cerebellum>(link, [this] { return stopping(); });
     hw::OdometryReading first;
     try {
@@ -50,10 +50,14 @@ class TrogdorDriver final : public hardware_driver::SerialDeviceDriver, private 
       if (e.kind() == links::ExchangeError::Kind::stopped) throw hardware_driver::Stopping();
       throw std::runtime_error(std::string(e.what()) + " (is the robot on, and is this its cerebellum's port?)");
     }
-    // The counters may have restarted with the robot: the pose carries on.
-    odometry_.restart();
-    odometry_.update(first, 0);
-    last_reading_ = Clock::now();
+    // Found again, the robot's counters carry what it drove while the line
+    // was down (it kept the last command): that motion is counted, unless
+    // the counters jumped further than the wheels could have (a robot
+    // restarted), when they are followed from here and the pose carries on.
+    const auto now = Clock::now();
+    if (!recovering) odometry_.restart();  // a new session: its first reading is the origin
+    odometry_.update(first, recovering ? std::chrono::duration<double>(now - last_reading_).count() : 0.0);
+    last_reading_ = now;
     sent_.reset();  // the current command goes out again
     next_reading_ = Clock::now() + kCycle;
   }
