@@ -35,6 +35,9 @@ void VfhNavigator::go_to(const geometry::Pose2& goal) {
   closest_ = std::numeric_limits<double>::infinity();
   turned_without_progress_ = 0;
   escaping_ = false;
+  at_position_ = false;
+  turning_first_ = false;
+  steering_ = false;
 }
 
 void VfhNavigator::drive(double speed, double turn_rate) {
@@ -98,7 +101,16 @@ Motion VfhNavigator::towards_goal(const geometry::Pose2& pose, const Scan& scan,
   const double dy = goal_->y - pose.y;
   const double distance = std::hypot(dx, dy);
   const double heading_error = geometry::angle_difference(goal_->yaw, pose.yaw);
+  // Once there, turning to the goal's heading goes on even if it carries
+  // the robot a little beyond distance_epsilon (a laser or a caster off the
+  // turning centre): switching back to driving at the point, now behind it,
+  // would rock between the two turns.
   if (distance < settings_.distance_epsilon) {
+    at_position_ = true;
+  } else if (distance > 2.0 * settings_.distance_epsilon) {
+    at_position_ = false;
+  }
+  if (at_position_) {
     if (std::abs(heading_error) < settings_.angle_epsilon) {
       mode_ = Mode::idle;
       return {.reached = true};
@@ -113,12 +125,22 @@ Motion VfhNavigator::towards_goal(const geometry::Pose2& pose, const Scan& scan,
   // first (1.5's wavefront inserted rotation waypoints for this); driving
   // on, the robot would circle it or sweep wide past it. Not while escaping
   // a dead end, which would turn it straight back in.
+  // With hysteresis: once turned to within half of turn_first_angle the
+  // planner steers, and may lead it up to 1.5 times that angle away (round
+  // an obstacle) before the robot turns on the spot again. One threshold
+  // rocked it: the turn brought the goal just inside it, the planner's way
+  // round took it just outside, ten times a second.
   const double bearing_error = geometry::angle_difference(std::atan2(dy, dx), pose.yaw);
+  const double turn_first_above = steering_ ? 1.5 * settings_.turn_first_angle : settings_.turn_first_angle;
+  if (!escaping_ && std::abs(bearing_error) > turn_first_above) turning_first_ = true;
+  if (turning_first_ && std::abs(bearing_error) < settings_.turn_first_angle / 2) turning_first_ = false;
   Motion motion;
-  if (!escaping_ && std::abs(bearing_error) > settings_.turn_first_angle) {
+  if (turning_first_) {
     planner_.reset();
+    steering_ = false;
     motion = turn_in_place(bearing_error);
   } else {
+    steering_ = true;
     const double desired = wrap_degrees(90.0 + bearing_error * kDegreesPerRadian);
     // Arrive without circling: no faster than stops in the distance left, and
     // than turns on a circle of half of it (1.5 circled goals it never slowed for).

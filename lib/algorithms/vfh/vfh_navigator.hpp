@@ -70,6 +70,9 @@ class VfhNavigator {
   double closest_ = 0;                   // m: the nearest to the goal so far
   double turned_without_progress_ = 0;   // rad turned since it last got nearer
   bool escaping_ = false;                // the planner found no way at the last step
+  bool at_position_ = false;             // within distance_epsilon: turning to the goal's heading
+  bool turning_first_ = false;           // turning on the spot towards a goal well off to the side
+  bool steering_ = false;                // the planner steers (since the last turn on the spot)
   std::uint64_t stuck_events_ = 0;
   std::uint64_t stalls_ = 0;
 };

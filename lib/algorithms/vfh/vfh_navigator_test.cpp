@@ -52,6 +52,49 @@ TEST(VfhNavigator, TurnsInPlaceTowardsTheGoalsHeadingAsTheSheetSays) {
   EXPECT_NEAR(m.turn_rate, radians(10), 1e-9);  // the minimum turn rate
 }
 
+TEST(VfhNavigator, OnceThereItKeepsTurningToTheHeadingThoughTheTurnCarriesItALittleFurther) {
+  Robot robot;
+  NavigatorSettings settings;
+  settings.distance_epsilon = 0.15;
+  VfhNavigator navigator{settings};
+  navigator.go_to({0.1, 0.0, radians(120)});  // within reach, facing away from the heading
+  Motion m = navigator.step(robot.pose, robot.scan(), kStep, false);
+  EXPECT_EQ(m.speed, 0.0);
+  EXPECT_GT(m.turn_rate, 0.0);
+  // The turn has carried the robot 0.17 m from the point, which is now
+  // behind it: it goes on turning left to the heading rather than back
+  // right towards the point.
+  robot.pose = {-0.07, 0.0, radians(60)};
+  m = navigator.step(robot.pose, robot.scan(), kStep, false);
+  EXPECT_EQ(m.speed, 0.0);
+  EXPECT_GT(m.turn_rate, 0.0);
+  // Well away (beyond twice the distance): it drives back to the point first.
+  robot.pose = {-0.3, 0.0, radians(60)};
+  m = navigator.step(robot.pose, robot.scan(), kStep, false);
+  EXPECT_LT(m.turn_rate, 0.0) << "the point is to its right, behind";
+}
+
+TEST(VfhNavigator, TurningFirstAndSteeringHandOverWithHysteresisNotAtOneAngle) {
+  Robot robot;  // open space
+  VfhNavigator navigator{NavigatorSettings{}};  // turn_first_angle 60 degrees
+  navigator.go_to({0.0, 5.0, 0.0});            // straight to the left: 90 degrees off
+  const auto at_bearing_off = [&](double degrees_off) {
+    robot.pose = {0.0, 0.0, radians(90.0 - degrees_off)};
+    return navigator.step(robot.pose, robot.scan(), kStep, false);
+  };
+  Motion m = at_bearing_off(90);
+  EXPECT_EQ(m.speed, 0.0) << "turns on the spot first";
+  EXPECT_GT(m.turn_rate, 0.0);
+  m = at_bearing_off(50);
+  EXPECT_EQ(m.speed, 0.0) << "goes on turning below 60 degrees, down to 30";
+  m = at_bearing_off(25);
+  EXPECT_GT(m.speed, 0.0) << "the planner steers";
+  m = at_bearing_off(70);
+  EXPECT_GT(m.speed, 0.0) << "led 70 degrees away by the planner: still steering, no turn on the spot";
+  m = at_bearing_off(95);
+  EXPECT_EQ(m.speed, 0.0) << "beyond 90 degrees: on the spot again";
+}
+
 TEST(VfhNavigator, AGoalAlreadyThereIsReachedOnceAndNotAgain) {
   Robot robot;
   VfhNavigator navigator{NavigatorSettings{}};
