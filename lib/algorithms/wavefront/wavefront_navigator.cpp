@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <utility>
 
 namespace playerkit::wavefront {
@@ -11,6 +12,11 @@ namespace {
 // A new goal differs from the last by more than these (1.5's test).
 constexpr double kSameGoalDistance = 0.001;  // m
 constexpr double kSameGoalAngle = 0.001;     // rad
+// The waypoint is handed down again when the localization has moved it this
+// much in the odometric frame since it was sent: the local planner steers
+// by odometry, and would otherwise stop where the old estimate put it.
+constexpr double kResendDistance = 0.05;                    // m
+constexpr double kResendAngle = 3.0 * std::numbers::pi / 180.0;  // rad
 
 std::string point_text(const geometry::Pose2& pose) {
   char text[64];
@@ -107,12 +113,17 @@ void WavefrontNavigator::follow(const geometry::Pose2& map_pose, BaseOrder& orde
       replan(map_pose, "the robot strayed from the path", order);
       if (follower_.active()) follow(map_pose, order);
       return;
-    case WaypointFollower::Action::drive:
-      if (step.new_target || !driving_) {
-        order = {BaseOrder::Kind::drive_to, to_odometry_.compose(step.target)};
+    case WaypointFollower::Action::drive: {
+      const geometry::Pose2 target = to_odometry_.compose(step.target);
+      const bool moved = std::hypot(target.x - sent_.x, target.y - sent_.y) > kResendDistance ||
+                         std::abs(geometry::angle_difference(target.yaw, sent_.yaw)) > kResendAngle;
+      if (step.new_target || !driving_ || moved) {
+        order = {BaseOrder::Kind::drive_to, target};
+        sent_ = target;
         driving_ = true;
       }
       return;
+    }
   }
 }
 

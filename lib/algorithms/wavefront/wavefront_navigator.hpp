@@ -5,7 +5,9 @@
 // frame, and it is planned again when the robot strays from the path, the
 // localization jumps or the local planner says it is stuck — at most
 // `most_plans_per_goal` times, then given up. A goal that cannot be planned
-// is refused at once. The driver adds the wire; `nav-bench` runs the same
+// is refused at once. A waypoint is handed down again when the localization
+// has since moved it in the odometric frame, so the local planner, which
+// steers by odometry, stops where the map says. The driver adds the wire; `nav-bench` runs the same
 // decisions in simulated time.
 //
 //   WavefrontNavigator navigator(map, planner_parameters, settings);
@@ -88,6 +90,7 @@ class WavefrontNavigator {
   std::optional<geometry::Pose2> pending_goal_;  // given, not planned yet
   std::optional<geometry::Pose2> last_map_pose_;
   geometry::Pose2 to_odometry_;  // odometric = this ∘ map
+  geometry::Pose2 sent_;         // the waypoint last handed down, odometric frame
   int plans_for_goal_ = 0;
   bool driving_ = false;
   std::vector<NavigationEvent> events_;

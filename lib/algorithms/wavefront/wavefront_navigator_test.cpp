@@ -64,6 +64,23 @@ TEST(WavefrontNavigator, PlansRoundTheWallAndHandsTheFirstWaypointDownInTheOdome
   EXPECT_EQ(navigator.plans(), 1u);
 }
 
+TEST(WavefrontNavigator, AWaypointIsHandedDownAgainWhenTheLocalizationMovesIt) {
+  const grid::OccupancyGrid map = room_with_wall();
+  WavefrontNavigator navigator(map, robot(), {});
+  navigator.set_goal({2.5, 1.0, 0.0});  // in sight: one leg
+  const geometry::Pose2 odometry{0.0, 0.0, 0.0};
+  ASSERT_EQ(navigator.cycle(odometry, {1.0, 1.0, 0.0}, false).kind, Kind::drive_to);
+  // A correction of 3 cm: the waypoint is where it was, near enough.
+  EXPECT_EQ(navigator.cycle(odometry, {1.03, 1.0, 0.0}, false).kind, Kind::none);
+  // 10 cm: in the odometric frame the goal is now 10 cm nearer.
+  const BaseOrder again = navigator.cycle(odometry, {1.1, 1.0, 0.0}, false);
+  ASSERT_EQ(again.kind, Kind::drive_to);
+  EXPECT_NEAR(again.target.x, 1.4, 1e-9);
+  EXPECT_NEAR(again.target.y, 0.0, 1e-9);
+  // A heading correction of 5 degrees turns it.
+  EXPECT_EQ(navigator.cycle(odometry, {1.1, 1.0, 5.0 * kPi / 180.0}, false).kind, Kind::drive_to);
+}
+
 TEST(WavefrontNavigator, TheSameGoalAgainIsNotANewGoal) {
   const grid::OccupancyGrid map = room_with_wall();
   WavefrontNavigator navigator(map, robot(), {});
