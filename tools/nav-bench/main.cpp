@@ -3,6 +3,7 @@
 // how it went. See --help.
 
 #include <CLI/CLI.hpp>
+#include <fstream>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
@@ -44,6 +45,19 @@ Exit status: 0 done, 1 runtime error (a bad world or configuration), 2 usage err
 int run(const bench::NavBenchOptions& options) {
   const bench::NavigationSetup setup = bench::read_navigation_setup(options.config);
   bench::NavigationLoop loop(options.world, setup, options.seed);
+  std::ofstream trace;
+  if (!options.trace.empty()) {
+    trace.open(options.trace);
+    if (!trace) throw std::runtime_error("cannot write the trace " + options.trace.string());
+    trace << "time,truth_x,truth_y,truth_yaw,estimate_x,estimate_y,estimate_yaw,speed,turn_rate,"
+             "vfh_goal_x,vfh_goal_y,vfh_goal_yaw,vfh_goal_active,stalled\n";
+    loop.set_step_observer([&trace](const bench::StepRecord& step) {
+      trace << step.time << ',' << step.truth.x << ',' << step.truth.y << ',' << step.truth.yaw << ','
+            << step.estimate.x << ',' << step.estimate.y << ',' << step.estimate.yaw << ',' << step.speed << ','
+            << step.turn_rate << ',' << step.local_goal.x << ',' << step.local_goal.y << ',' << step.local_goal.yaw
+            << ',' << step.local_goal_active << ',' << step.stalled << '\n';
+    });
+  }
   const auto goals = bench::sample_goals(loop.reference_planner(), loop.true_pose(),
                                          {.count = options.goals, .seed = options.seed});
   std::vector<bench::GoalOutcome> outcomes;
@@ -73,6 +87,7 @@ int main(int argc, char** argv) {
   app.add_option("--goals", line.goals, "how many goals (default 50)");
   app.add_option("--seed", line.seed, "seed of the goals, the world's noise and the filter (default 1)");
   app.add_option("--format", line.format, "text or json (default text)");
+  app.add_option("--trace", line.trace, "also write every step as CSV to this file (truth, estimate, commands)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -24,6 +24,7 @@ NavBenchOptions make_nav_bench_options(const NavBenchCommandLine& line) {
   }
   options.goals = line.goals;
   options.seed = line.seed;
+  options.trace = line.trace;
   if (line.format == "text") {
     options.format = ReportFormat::text;
   } else if (line.format == "json") {

@@ -20,6 +20,7 @@ struct NavBenchCommandLine {
   int goals = 50;
   std::uint64_t seed = 1;
   std::string format = "text";
+  std::string trace;   // empty: none
 };
 
 struct NavBenchOptions {
@@ -28,6 +29,7 @@ struct NavBenchOptions {
   int goals = 50;
   std::uint64_t seed = 1;
   ReportFormat format = ReportFormat::text;
+  std::filesystem::path trace;
 };
 
 NavBenchOptions make_nav_bench_options(const NavBenchCommandLine& line);

@@ -57,27 +57,34 @@ RunTotals summarize(const std::vector<GoalOutcome>& goals, std::vector<double>& 
 
 namespace {
 
-double rounded(double value, double unit) { return std::round(value / unit) * unit; }
+// To `decimals` places, as the nearest double to the decimal (0.204, not
+// 0.20400000000000001, in the JSON).
+double rounded(double value, int decimals) {
+  const double scale = std::pow(10.0, decimals);
+  return std::round(value * scale) / scale;
+}
 
 nlohmann::json goal_json(const GoalOutcome& goal) {
   return {
-      {"start", {rounded(goal.start.x, 0.001), rounded(goal.start.y, 0.001)}},
-      {"goal", {rounded(goal.goal.x, 0.001), rounded(goal.goal.y, 0.001),
-                rounded(goal.goal.yaw * 180.0 / std::numbers::pi, 0.1)}},
+      {"start", {rounded(goal.start.x, 3), rounded(goal.start.y, 3)}},
+      {"goal", {rounded(goal.goal.x, 3), rounded(goal.goal.y, 3),
+                rounded(goal.goal.yaw * 180.0 / std::numbers::pi, 1)}},
       {"success", goal.success},
       {"ending", goal.ending},
-      {"time_s", rounded(goal.time_s, 0.1)},
-      {"time_limit_s", rounded(goal.time_limit_s, 0.1)},
+      {"time_s", rounded(goal.time_s, 1)},
+      {"time_limit_s", rounded(goal.time_limit_s, 1)},
       {"collisions", goal.collisions},
-      {"min_clearance_m", rounded(goal.min_clearance_m, 0.001)},
-      {"path_m", rounded(goal.path_m, 0.001)},
-      {"plan_m", rounded(goal.plan_m, 0.001)},
-      {"path_ratio", rounded(goal.path_ratio(), 0.001)},
+      {"min_clearance_m", rounded(goal.min_clearance_m, 3)},
+      {"path_m", rounded(goal.path_m, 3)},
+      {"plan_m", rounded(goal.plan_m, 3)},
+      {"path_ratio", rounded(goal.path_ratio(), 3)},
       {"stuck_events", goal.stuck_events},
-      {"flips_per_m", rounded(goal.flips_per_m(), 0.001)},
+      {"flips_per_m", rounded(goal.flips_per_m(), 3)},
       {"replans", goal.replans},
-      {"replan_ms_max", rounded(goal.replan_ms_max, 0.001)},
-      {"loc_err_m", rounded(goal.localization_error_m, 0.001)},
+      {"replan_ms_max", rounded(goal.replan_ms_max, 3)},
+      {"loc_err_m", rounded(goal.localization_error_m, 3)},
+      {"goal_distance_m", rounded(goal.goal_distance_m, 3)},
+      {"goal_angle_deg", rounded(goal.goal_angle_deg, 1)},
       {"relocalized", goal.relocalized},
   };
 }
@@ -87,17 +94,17 @@ nlohmann::json goal_json(const GoalOutcome& goal) {
 nlohmann::json to_json(const std::vector<GoalOutcome>& goals, const RunTotals& totals) {
   const nlohmann::json summary = {
       {"goals", totals.goals},
-      {"success_pct", rounded(totals.success_pct, 0.1)},
+      {"success_pct", rounded(totals.success_pct, 1)},
       {"collisions", totals.collisions},
-      {"min_clearance_m", rounded(totals.min_clearance_m, 0.001)},
-      {"clearance_p1_m", rounded(totals.clearance_p1_m, 0.001)},
-      {"path_ratio_mean", rounded(totals.path_ratio_mean, 0.001)},
-      {"time_mean_s", rounded(totals.time_mean_s, 0.1)},
+      {"min_clearance_m", rounded(totals.min_clearance_m, 3)},
+      {"clearance_p1_m", rounded(totals.clearance_p1_m, 3)},
+      {"path_ratio_mean", rounded(totals.path_ratio_mean, 3)},
+      {"time_mean_s", rounded(totals.time_mean_s, 1)},
       {"stuck_events", totals.stuck_events},
-      {"flips_per_m", rounded(totals.flips_per_m, 0.001)},
-      {"replan_ms_max", rounded(totals.replan_ms_max, 0.001)},
-      {"vfh_ms_p99", rounded(totals.vfh_ms_p99, 0.0001)},
-      {"loc_err_mean_m", rounded(totals.loc_err_mean_m, 0.001)},
+      {"flips_per_m", rounded(totals.flips_per_m, 3)},
+      {"replan_ms_max", rounded(totals.replan_ms_max, 3)},
+      {"vfh_ms_p99", rounded(totals.vfh_ms_p99, 4)},
+      {"loc_err_mean_m", rounded(totals.loc_err_mean_m, 3)},
       {"relocalized", totals.relocalized},
   };
   nlohmann::json per_goal = nlohmann::json::array();
@@ -108,16 +115,17 @@ nlohmann::json to_json(const std::vector<GoalOutcome>& goals, const RunTotals& t
 std::string to_text(const std::vector<GoalOutcome>& goals, const RunTotals& totals) {
   std::string text;
   char line[256];
-  std::snprintf(line, sizeof line, "%4s %16s %16s %-20s %7s %6s %6s %6s %5s %6s\n", "goal", "from", "to", "ending",
-                "time_s", "ratio", "clear", "locerr", "flips", "replan");
+  std::snprintf(line, sizeof line, "%4s %16s %16s %-20s %7s %6s %6s %6s %6s %6s %5s %6s\n", "goal", "from", "to",
+                "ending", "time_s", "off_m", "off_deg", "ratio", "clear", "locerr", "flips", "replan");
   text += line;
   int index = 0;
   for (const GoalOutcome& goal : goals) {
     char from[32], to[32];
     std::snprintf(from, sizeof from, "(%.2f,%.2f)", goal.start.x, goal.start.y);
     std::snprintf(to, sizeof to, "(%.2f,%.2f)", goal.goal.x, goal.goal.y);
-    std::snprintf(line, sizeof line, "%4d %16s %16s %-20s %7.1f %6.2f %6.3f %6.3f %5d %6d\n", ++index, from, to,
-                  goal.ending.c_str(), goal.time_s, goal.path_ratio(), goal.min_clearance_m,
+    std::snprintf(line, sizeof line, "%4d %16s %16s %-20s %7.1f %6.2f %6.1f %6.2f %6.3f %6.3f %5d %6d\n", ++index,
+                  from, to, goal.ending.c_str(), goal.time_s, goal.goal_distance_m, goal.goal_angle_deg,
+                  goal.path_ratio(), goal.min_clearance_m,
                   goal.localization_error_m, goal.heading_flips, goal.replans);
     text += line;
   }

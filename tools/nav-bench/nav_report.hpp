@@ -26,8 +26,10 @@ struct GoalOutcome {
   int stuck_events = 0;          // vfh gave a waypoint up
   int heading_flips = 0;         // turn direction reversed (both above 0.1 rad/s)
   int replans = 0;
-  double replan_ms_max = 0.0;    // longest cycle that planned, wall time
+  double replan_ms_max = 0.0;    // longest cycle that planned, processor time
   double localization_error_m = 0.0;  // at the ending
+  double goal_distance_m = 0.0;       // truth from the goal, at the ending
+  double goal_angle_deg = 0.0;        // truth's heading from the goal's, at the ending
   bool relocalized = false;      // lost (> 0.5 m off): the filter was reset on the truth afterwards
 
   [[nodiscard]] double path_ratio() const { return plan_m > 0.0 ? path_m / plan_m : 0.0; }
@@ -45,7 +47,7 @@ struct RunTotals {
   int stuck_events = 0;
   double flips_per_m = 0.0;      // all flips over all metres
   double replan_ms_max = 0.0;
-  double vfh_ms_p99 = 0.0;       // wall time of one vfh cycle
+  double vfh_ms_p99 = 0.0;       // processor time of one vfh cycle
   double loc_err_mean_m = 0.0;   // at the goals' endings
   int relocalized = 0;
 };

@@ -1,6 +1,6 @@
 #include "navigation_loop.hpp"
 
-#include <chrono>
+#include <ctime>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -26,7 +26,18 @@ struct LoopRobot {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+// The processor time of this thread: what the figures mean to say (the
+// cost of a vfh cycle, of a plan), unlike wall time, which other programs
+// on the machine stretch.
+struct CpuClock {
+  using time_point = double;  // ms
+  static time_point now() {
+    timespec spent{};
+    ::clock_gettime(CLOCK_THREAD_CPUTIME_ID, &spent);
+    return static_cast<double>(spent.tv_sec) * 1e3 + static_cast<double>(spent.tv_nsec) / 1e6;
+  }
+};
+using Clock = CpuClock;
 
 constexpr double kSuccessDistance = 0.30;                     // m, truth from the goal
 constexpr double kSuccessAngle = 15.0 * std::numbers::pi / 180.0;
@@ -35,9 +46,7 @@ constexpr double kLimitSlack = 20.0;                          // s: ...plus this
 constexpr double kFlipTurnRate = 0.1;                         // rad/s: a turn that counts as one
 constexpr double kLostDistance = 0.5;                         // m: the filter is reset on the truth
 
-double milliseconds_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+double milliseconds_since(Clock::time_point start) { return Clock::now() - start; }
 
 // The first position device whose robot also carries a laser.
 LoopRobot find_robot(const sim::worldfile::LoadedWorld& loaded) {
@@ -91,6 +100,7 @@ struct NavigationLoop::State {
   bool stuck_flag = false;          // vfh's stall flag after "stuck", until its next command
   std::vector<double> clearances;
   std::vector<double> vfh_ms;
+  std::function<void(const StepRecord&)> observer;
 
   State(const NavigationSetup& config, sim::worldfile::WorldDescription description, std::uint64_t seed)
       : setup(config),
@@ -134,6 +144,9 @@ geometry::Pose2 NavigationLoop::true_pose() const { return state_->world->true_p
 const grid::OccupancyGrid& NavigationLoop::map() const { return state_->map; }
 wavefront::WavefrontPlanner& NavigationLoop::reference_planner() { return state_->reference; }
 std::vector<double>& NavigationLoop::clearances() { return state_->clearances; }
+void NavigationLoop::set_step_observer(std::function<void(const StepRecord&)> observer) {
+  state_->observer = std::move(observer);
+}
 std::vector<double>& NavigationLoop::vfh_milliseconds() { return state_->vfh_ms; }
 
 GoalOutcome NavigationLoop::drive_to(const geometry::Pose2& goal) {
@@ -210,6 +223,11 @@ GoalOutcome NavigationLoop::drive_to(const geometry::Pose2& goal) {
       last_turn = motion.turn_rate;
     }
 
+    if (s.observer) {
+      const std::optional<geometry::Pose2> local_goal = s.local.goal();
+      s.observer({s.world->time(), truth, s.localized(), motion.speed, motion.turn_rate,
+                  local_goal.value_or(geometry::Pose2{}), s.local.goal_active(), base.stalled});
+    }
     outcome.time_s = s.world->time() - started;
     if (s.global.goals_reached() != reached_before) {
       const bool close = std::hypot(truth.x - goal.x, truth.y - goal.y) <= kSuccessDistance &&
@@ -227,6 +245,8 @@ GoalOutcome NavigationLoop::drive_to(const geometry::Pose2& goal) {
   const geometry::Pose2 estimate = s.localized();
   const geometry::Pose2 truth = true_pose();
   outcome.localization_error_m = std::hypot(estimate.x - truth.x, estimate.y - truth.y);
+  outcome.goal_distance_m = std::hypot(truth.x - goal.x, truth.y - goal.y);
+  outcome.goal_angle_deg = geometry::angle_difference(truth.yaw, goal.yaw) * 180.0 / std::numbers::pi;
   if (outcome.localization_error_m > kLostDistance) {
     s.relocalize_on_truth();
     outcome.relocalized = true;

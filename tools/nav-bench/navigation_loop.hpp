@@ -5,12 +5,13 @@
 // pure cores the amcl, wavefront and vfh drivers run (AmclFilter,
 // WavefrontNavigator, VfhNavigator). No server and no threads: the same
 // world, setup and seed give the same run, however loaded the machine is.
-// Only the wall-time figures (planning and vfh milliseconds) vary.
+// Only the timing figures (processor milliseconds of planning and vfh) vary.
 //
 //   NavigationLoop loop(world_file, setup, seed);
 //   for (const geometry::Pose2& goal : goals) outcomes.push_back(loop.drive_to(goal));
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -21,6 +22,18 @@
 #include "navigation_setup.hpp"
 
 namespace playerkit::nav_bench {
+
+// One step of the loop, for a trace.
+struct StepRecord {
+  double time = 0.0;             // s, simulated
+  geometry::Pose2 truth;
+  geometry::Pose2 estimate;      // amcl's, map frame
+  double speed = 0.0;            // commanded, m/s
+  double turn_rate = 0.0;        // commanded, rad/s
+  geometry::Pose2 local_goal;    // the waypoint vfh drives to, odometric frame
+  bool local_goal_active = false;
+  bool stalled = false;
+};
 
 class NavigationLoop {
  public:
@@ -41,6 +54,9 @@ class NavigationLoop {
   // A planner on the world's map with the setup's clearance: for choosing
   // goals and for the reference plans.
   [[nodiscard]] wavefront::WavefrontPlanner& reference_planner();
+
+  // Called after every step (nav-bench --trace).
+  void set_step_observer(std::function<void(const StepRecord&)> observer);
 
   // Every step's body clearance and every vfh cycle's time so far.
   [[nodiscard]] std::vector<double>& clearances();
