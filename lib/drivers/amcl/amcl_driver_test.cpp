@@ -137,6 +137,29 @@ TEST_F(AmclDriverTest, PostHocLocalizationFromARoughGuessConverges) {
   expect_convergence(post_hoc_config());
 }
 
+// A robot that never moves still gets its estimate: 1.5's amcl published
+// only after the robot had moved past its update thresholds, so 1.5's
+// wavefront, waiting for a pose, never planned until someone nudged the robot.
+TEST_F(AmclDriverTest, AStandingRobotGetsItsEstimateAtOnce) {
+  const testing::DriveStep first = drive.front();
+  drive.clear();
+  for (std::uint32_t i = 0; i < 5; ++i) drive.push_back({first.truth, first.odometry, {1000, i * 100000}});
+  load();
+  localize_device = &localize();
+  ASSERT_TRUE(localize().subscribe());
+  ASSERT_TRUE(eventually([&] { return timer->waiting_for().has_value(); }));
+  timer->set(1h);
+  ASSERT_TRUE(eventually([&] {
+    const auto sample = localize().latest_data();
+    return sample && sample->sequence > 0 && latest().hypoth_count > 0;
+  })) << "no estimate while the robot stands still";
+  // Where init_pose put it (0.2, 1.2), or nearer the truth (0, 1) if the
+  // scan has been taken in.
+  const geometry::Pose2 estimate = pose_from_wire(latest().hypoths[0].mean);
+  EXPECT_LT(std::hypot(estimate.x - first.truth.x, estimate.y - first.truth.y), 0.3);
+  localize().unsubscribe();
+}
+
 TEST_F(AmclDriverTest, SetPoseMovesTheEstimate) {
   load();
   localize_device = &localize();
