@@ -1,6 +1,7 @@
 #include "driver_listing.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <nlohmann/json.hpp>
 #include <vector>
 
@@ -115,7 +116,14 @@ void write_spec_info(const core::DriverSpec& spec, std::ostream& out) {
   out << "\nConfig:\n  " << config_section(spec) << "\n";
   out << "\nTry it:\n  player-drivers run " << spec.name;
   for (const auto& option : spec.doc.option_rows()) {
-    if (option.name == "port") out << " port=/dev/ttyUSB0";
+    // A serial link is shown on a USB adapter; a port that is a number (a
+    // Nomad server's TCP port) with its default.
+    if (option.name != "port") continue;
+    const std::string& fallback = option.default_value;
+    const bool number = !fallback.empty() && std::all_of(fallback.begin(), fallback.end(), [](unsigned char c) {
+      return std::isdigit(c) != 0;
+    });
+    out << " port=" << (number ? fallback : std::string("/dev/ttyUSB0"));
   }
   out << " -n 5\n";
 }

@@ -98,6 +98,13 @@ TEST(DriverListing, InfoShowsOptionsRequestsManualAndConfig) {
   EXPECT_TRUE(contains(text, "Requests:\n  GET_GEOM: pose and size\n")) << text;
   EXPECT_TRUE(contains(text, "Config:\n  laser:0 ( driver \"toylaser\" port \"/dev/ttyUSB0\" )\n")) << text;
   EXPECT_TRUE(contains(text, "player-drivers run toylaser port=/dev/ttyUSB0 -n 5")) << text;
+  // A port that is a TCP port number (a Nomad's server) is tried with its default, not a tty.
+  core::DriverRegistry networked;
+  auto netbot = spec("netbot", {protocol::kPositionCode}, protocol::Access::kAll);
+  netbot.doc.options = {{"host", "string", "\"localhost\"", "", "the robot's server"},
+                        {"port", "int", "7019", "", "its TCP port"}};
+  networked.add(netbot);
+  EXPECT_TRUE(contains(info_text(networked, "netbot"), "player-drivers run netbot port=7019 -n 5"));
 }
 
 TEST(DriverListing, AnUndocumentedDriverStillHasAnInfoAndAConfig) {
