@@ -12,6 +12,7 @@
 #include "families/port_probe.hpp"
 #include "families/segwayrmp/emulator/segwayrmp_emulator.hpp"
 #include "links/pseudo_terminal.hpp"
+#include "support/eventually.hpp"
 
 namespace playerkit::families {
 namespace segwayrmp_family_test {
@@ -62,8 +63,11 @@ TEST(SegwayRmpFamily, ProbeFindsTheRobotBehindItsAdapterAndLeavesTheChannelClose
   ASSERT_TRUE(result.found) << result.problem;
   EXPECT_EQ(result.found->driver, "segwayrmp");
   EXPECT_EQ(result.config_line, "position:0 ( driver \"segwayrmp\" port \"" + robot.device_path() + "\" )");
-  EXPECT_FALSE(robot.with_emulator<emulators::SegwayRmpEmulator>(
-      [](emulators::SegwayRmpEmulator& e) { return e.channel_open(); }));
+  // The probe's closing C reaches the emulator's thread a moment later.
+  EXPECT_TRUE(::playerkit::testing::eventually([&] {
+    return robot.with_emulator<emulators::SegwayRmpEmulator>(
+        [](emulators::SegwayRmpEmulator& e) { return !e.channel_open(); });
+  }));
 }
 
 TEST(SegwayRmpFamily, ProbeFindsNothingOnASilentLine) {
