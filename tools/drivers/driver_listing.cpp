@@ -114,6 +114,11 @@ void write_spec_info(const core::DriverSpec& spec, std::ostream& out) {
     for (const auto& request : spec.doc.requests) out << "  " << request << "\n";
   }
   out << "\nConfig:\n  " << config_section(spec) << "\n";
+  if (!spec.doc.unavailable.empty()) {
+    // Nothing to try: the server refuses it, and says what to use instead.
+    out << "\nCannot run:\n  " << spec.doc.unavailable << "\n";
+    return;
+  }
   out << "\nTry it:\n  player-drivers run " << spec.name;
   for (const auto& option : spec.doc.option_rows()) {
     // A serial link is shown on a USB adapter; a port that is a number (a

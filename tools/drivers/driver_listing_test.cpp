@@ -105,6 +105,13 @@ TEST(DriverListing, InfoShowsOptionsRequestsManualAndConfig) {
                         {"port", "int", "7019", "", "its TCP port"}};
   networked.add(netbot);
   EXPECT_TRUE(contains(info_text(networked, "netbot"), "player-drivers run netbot port=7019 -n 5"));
+  // A driver that cannot run in any build says why instead of "Try it".
+  auto refused = spec("oldbot", {protocol::kPositionCode}, protocol::Access::kAll);
+  refused.doc.unavailable = "its middleware cannot be had; use newbot";
+  networked.add(refused);
+  const std::string text_of_refused = info_text(networked, "oldbot");
+  EXPECT_TRUE(contains(text_of_refused, "Cannot run:\n  its middleware cannot be had; use newbot\n")) << text_of_refused;
+  EXPECT_FALSE(contains(text_of_refused, "Try it")) << text_of_refused;
 }
 
 TEST(DriverListing, AnUndocumentedDriverStillHasAnInfoAndAConfig) {
