@@ -14,195 +14,65 @@
 //
 // Figures only; the emulator shares the machine (its own thread).
 
-#include <algorithm>
-#include <chrono>
-#include <condition_variable>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <memory>
-#include <mutex>
-#include <optional>
-#include <random>
 #include <span>
 #include <string>
-#include <thread>
-#include <vector>
 
-#include "config/config_file.hpp"
-#include "core/server_clock.hpp"
-#include "core/clock.hpp"
-#include "core/device_table.hpp"
-#include "core/driver_registry.hpp"
-#include "core/instantiate.hpp"
-#include "core/logger.hpp"
-#include "drivers/builtin.hpp"
+#include "driver_bench_support.hpp"
+#include "emulators/runner/emulator_runner.hpp"
 #include "families/p2os/driver/p2os_device_driver.hpp"
 #include "families/p2os/emulator/p2os_robot_emulator.hpp"
-#include "emulators/runner/emulator_runner.hpp"
 #include "protocol/binary_codec.hpp"
 #include "protocol/interfaces.hpp"
 #include "protocol/messages/position.hpp"
 
-namespace {
-
 using namespace playerkit;
+using namespace playerkit::bench;
 using namespace std::chrono_literals;
-using SteadyClock = std::chrono::steady_clock;
-
-struct Options {
-  int seconds = 10;     // CPU measurement while only following the robot
-  int commands = 400;   // latency samples
-  int interval_ms = 15; // between commands
-};
-
-Options parse(int argc, char** argv) {
-  Options options;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string name = argv[i];
-    const int value = std::atoi(argv[i + 1]);
-    if (name == "--seconds") options.seconds = std::max(1, value);
-    else if (name == "--commands") options.commands = std::max(10, value);
-    else if (name == "--interval") options.interval_ms = std::max(1, value);
-    else {
-      std::fprintf(stderr, "p2os_bench: unknown option %s (--seconds, --commands, --interval)\n", name.c_str());
-      std::exit(2);
-    }
-  }
-  return options;
-}
-
-// The right-wheel byte of the latest VEL2 that left, by the trace hook.
-struct Vel2Watch {
-  std::mutex mutex;
-  std::condition_variable changed;
-  int wanted = -1;  // the VEL2 right-wheel units awaited
-  std::optional<SteadyClock::time_point> seen_at;
-
-  void on_bytes(bool outgoing, std::span<const std::uint8_t> bytes, SteadyClock::time_point when) {
-    // One frame per write: FA FB 06 20 3B right left chk chk.
-    if (!outgoing || bytes.size() < 7 || bytes[3] != 0x20) return;
-    std::lock_guard lock(mutex);
-    if (wanted >= 0 && bytes[5] == wanted && !seen_at) {
-      seen_at = when;
-      changed.notify_all();
-    }
-  }
-};
-
-double percentile(std::vector<double> values, double p) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const auto index = static_cast<std::size_t>(p * static_cast<double>(values.size() - 1) + 0.5);
-  return values[std::min(index, values.size() - 1)];
-}
-
-double milliseconds(std::chrono::nanoseconds d) { return std::chrono::duration<double, std::milli>(d).count(); }
-
-}  // namespace
 
 int main(int argc, char** argv) {
-  const Options options = parse(argc, argv);
+  const BenchOptions options =
+      parse_options(argc, argv, "p2os_bench", BenchOptions{.seconds = 10, .commands = 400, .interval_ms = 15}, 1);
 
   emulators::P2osEmulatorOptions robot_options;
   robot_options.subclass = "p3dx";
   emulators::EmulatorRunner robot(std::make_unique<emulators::P2osRobotEmulator>(robot_options),
                                   emulators::PtyEndpoint{});
-
-  core::ServerClock clock;  // the wall clock: no driver here claims it
-  core::Logger logger("p2os_bench");
-  logger.set_level(core::LogLevel::kWarning);
-  core::DriverRegistry registry;
-  drivers::register_builtin_drivers(registry);
-  core::DeviceTable devices;
-  const std::string text = "position:0 ( driver \"p2os_position\" port \"" + robot.device_path() +
-                           "\" max_xspeed 900 )\n"
-                           "sonar:0 ( driver \"p2os_sonar\" )\n"
-                           "power:0 ( driver \"p2os_power\" )\n"
-                           "bumper:0 ( driver \"p2os_bumper\" )\n";
-  core::instantiate_devices(config::ConfigFile::parse(text, "bench.cfg", core::load_options_for(registry, 6665)),
-                            registry, devices, clock, logger);
-  core::Device& position = *devices.find(6665, {protocol::kPositionCode, 0});
-
-  Vel2Watch watch;
-  position.driver().set_byte_trace(
-      [&watch](bool outgoing, std::span<const std::uint8_t> bytes, SteadyClock::time_point when) {
-        watch.on_bytes(outgoing, bytes, when);
-      });
-  for (core::Device* device : devices.all()) {
-    if (!device->subscribe()) {
-      std::fprintf(stderr, "p2os_bench: %s could not be subscribed\n", device->name().c_str());
-      return 1;
-    }
-  }
+  // The rig's ServerClock is the wall clock: no driver here claims it.
+  DriverRig rig("p2os_bench", "position:0 ( driver \"p2os_position\" port \"" + robot.device_path() +
+                                  "\" max_xspeed 900 )\n"
+                                  "sonar:0 ( driver \"p2os_sonar\" )\n"
+                                  "power:0 ( driver \"p2os_power\" )\n"
+                                  "bumper:0 ( driver \"p2os_bumper\" )\n");
+  core::Device& position = rig.device(protocol::kPositionCode);
+  LineWatch watch(position);
+  if (!rig.subscribe_all()) return 1;
   auto& connection = dynamic_cast<drivers::p2os::P2osDeviceDriver&>(position.driver()).connection();
-  auto counter = [&connection](std::string_view name) -> std::uint64_t {
-    for (const auto& c : connection.counters()) {
-      if (c.name == name) return c.value;
-    }
-    return 0;
-  };
 
-  // 1. Following the robot: SIPs in, four devices published, keep-alives out.
-  std::this_thread::sleep_for(500ms);
-  auto cpu_before = connection.io_thread_cpu_time();
-  auto sips_before = counter("sips");
-  auto wall_before = SteadyClock::now();
-  std::this_thread::sleep_for(std::chrono::seconds(options.seconds));
-  auto cpu_after = connection.io_thread_cpu_time();
-  const double idle_wall = milliseconds(SteadyClock::now() - wall_before);
-  const double idle_cpu = cpu_before && cpu_after ? milliseconds(*cpu_after - *cpu_before) : -1.0;
-  const auto idle_sips = counter("sips") - sips_before;
+  // SIPs in, four devices published, keep-alives out.
+  const FollowResult follow = follow_connection(connection, options, "sips");
 
-  // 2. Commands every interval: latency to the wire, and CPU meanwhile.
-  std::vector<double> latencies;
-  int missed = 0;
-  cpu_before = connection.io_thread_cpu_time();
-  wall_before = SteadyClock::now();
-  // Commands at random phases (a fixed interval would lock onto a polling
-  // loop's slice, as onto the 5 ms one the I/O thread had until 2026-12-07).
-  std::mt19937 random(1);
-  std::uniform_int_distribution<int> jitter_us(0, 5000);
-  for (int i = 0; i < options.commands; ++i) {
+  // Random phases matter here: a fixed interval would lock onto a polling
+  // loop's slice, as onto the 5 ms one the I/O thread had until 2026-12-07.
+  const CommandRun run = run_commands(connection, position, watch, options, 5ms, [](int i) {
     const int units = 1 + i % 40;  // 20 ... 800 mm/s, never the previous one
     protocol::PositionCommand command;
     command.xspeed = units * 20;
-    {
-      std::lock_guard lock(watch.mutex);
-      watch.wanted = units;
-      watch.seen_at.reset();
-    }
-    const auto sent = SteadyClock::now();
-    position.put_command(1, protocol::encode(command));
-    std::unique_lock lock(watch.mutex);
-    if (watch.changed.wait_for(lock, 1s, [&] { return watch.seen_at.has_value(); })) {
-      latencies.push_back(milliseconds(*watch.seen_at - sent));
-    } else {
-      ++missed;
-    }
-    lock.unlock();
-    std::this_thread::sleep_for(std::chrono::milliseconds(options.interval_ms) +
-                                std::chrono::microseconds(jitter_us(random)));
-  }
-  cpu_after = connection.io_thread_cpu_time();
-  const double busy_wall = milliseconds(SteadyClock::now() - wall_before);
-  const double busy_cpu = cpu_before && cpu_after ? milliseconds(*cpu_after - *cpu_before) : -1.0;
+    // The right-wheel byte of a VEL2, so it is told from the keep-alive repeats.
+    return CommandTrial{protocol::encode(command), [units](std::span<const std::uint8_t> bytes,
+                                                           SteadyClock::time_point) {
+                          // One frame per write: FA FB 06 20 3B right left chk chk.
+                          return bytes.size() >= 7 && bytes[3] == 0x20 && bytes[5] == units;
+                        }};
+  });
 
-  position.put_command(1, protocol::encode(protocol::PositionCommand{}));
-  devices.shutdown_all();
+  rig.stop_and_shut_down(position, protocol::encode(protocol::PositionCommand{}));
 
   std::printf("p2os_bench: Pioneer p3dx emulated on %s, 10 Hz SIPs; position, sonar, power, bumper subscribed\n",
               robot.device_path().c_str());
-  std::printf("following the robot: %.1f s, %llu SIPs (%.1f /s)\n", idle_wall / 1000.0,
-              static_cast<unsigned long long>(idle_sips), static_cast<double>(idle_sips) * 1000.0 / idle_wall);
-  std::printf("  I/O thread CPU: %.1f ms (%.2f %% of one core, %.1f us per SIP)\n", idle_cpu,
-              100.0 * idle_cpu / idle_wall, idle_sips > 0 ? 1000.0 * idle_cpu / static_cast<double>(idle_sips) : 0.0);
-  std::printf("commands: %d velocity commands every %d ms over %.1f s\n", options.commands, options.interval_ms,
-              busy_wall / 1000.0);
-  std::printf("  I/O thread CPU: %.1f ms (%.2f %% of one core)\n", busy_cpu, 100.0 * busy_cpu / busy_wall);
-  std::printf("  put_command -> VEL2 written: p50 %.2f ms, p99 %.2f ms, max %.2f ms (%zu samples, %d missed)\n",
-              percentile(latencies, 0.5), percentile(latencies, 0.99), percentile(latencies, 1.0),
-              latencies.size(), missed);
+  print_follow(follow, "I/O thread", "SIP");
+  print_commands(run, "VEL2 written");
   return 0;
 }

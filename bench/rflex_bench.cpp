@@ -15,28 +15,13 @@
 //
 // Figures only; the emulator shares the machine (its own thread).
 
-#include <algorithm>
-#include <chrono>
-#include <condition_variable>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <memory>
-#include <mutex>
-#include <optional>
-#include <random>
 #include <span>
 #include <string>
-#include <thread>
-#include <vector>
 
-#include "config/config_file.hpp"
-#include "core/device_table.hpp"
-#include "core/driver_registry.hpp"
-#include "core/instantiate.hpp"
-#include "core/logger.hpp"
-#include "core/server_clock.hpp"
-#include "drivers/builtin.hpp"
+#include "driver_bench_support.hpp"
 #include "emulators/runner/emulator_runner.hpp"
 #include "families/rflex/driver/rflex_device_driver.hpp"
 #include "families/rflex/emulator/rflex_emulator.hpp"
@@ -44,159 +29,47 @@
 #include "protocol/interfaces.hpp"
 #include "protocol/messages/position.hpp"
 
-namespace {
-
 using namespace playerkit;
+using namespace playerkit::bench;
 using namespace std::chrono_literals;
-using SteadyClock = std::chrono::steady_clock;
-
-struct Options {
-  int seconds = 10;
-  int commands = 300;
-  int interval_ms = 40;
-};
-
-Options parse(int argc, char** argv) {
-  Options options;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string name = argv[i];
-    const int value = std::atoi(argv[i + 1]);
-    if (name == "--seconds") options.seconds = std::max(1, value);
-    else if (name == "--commands") options.commands = std::max(10, value);
-    else if (name == "--interval") options.interval_ms = std::max(1, value);
-    else {
-      std::fprintf(stderr, "rflex_bench: unknown option %s (--seconds, --commands, --interval)\n", name.c_str());
-      std::exit(2);
-    }
-  }
-  return options;
-}
-
-// The translation velocity of the latest SET_DIR that left, by the trace hook.
-struct SetDirWatch {
-  std::mutex mutex;
-  std::condition_variable changed;
-  std::int64_t wanted = -1;
-  std::optional<SteadyClock::time_point> seen_at;
-
-  void on_bytes(bool outgoing, std::span<const std::uint8_t> bytes, SteadyClock::time_point when) {
-    // One packet per write: 1B 02 02 00 07 0E axis v3 v2 v1 v0 ...
-    if (!outgoing || bytes.size() < 11 || bytes[2] != 0x02 || bytes[4] != 0x07 || bytes[6] != 0x00) return;
-    const std::int64_t velocity = (std::int64_t{bytes[7]} << 24) | (bytes[8] << 16) | (bytes[9] << 8) | bytes[10];
-    std::lock_guard lock(mutex);
-    if (velocity == wanted && !seen_at) {
-      seen_at = when;
-      changed.notify_all();
-    }
-  }
-};
-
-double percentile(std::vector<double> values, double p) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const auto index = static_cast<std::size_t>(p * static_cast<double>(values.size() - 1) + 0.5);
-  return values[std::min(index, values.size() - 1)];
-}
-
-double milliseconds(std::chrono::nanoseconds d) { return std::chrono::duration<double, std::milli>(d).count(); }
-
-}  // namespace
 
 int main(int argc, char** argv) {
-  const Options options = parse(argc, argv);
+  const BenchOptions options = parse_options(argc, argv, "rflex_bench", {}, 1);
   emulators::EmulatorRunner robot(std::make_unique<emulators::rflex::RflexEmulator>(), emulators::PtyEndpoint{});
-
-  core::ServerClock clock;
-  core::Logger logger("rflex_bench");
-  logger.set_level(core::LogLevel::kWarning);
-  core::DriverRegistry registry;
-  drivers::register_builtin_drivers(registry);
-  core::DeviceTable devices;
-  const std::string text = "position:0 ( driver \"rflex_position\" rflex_serial_port \"" + robot.device_path() +
-                           "\" odo_distance_conversion 103 odo_angle_conversion 35000 )\n"
-                           "sonar:0 ( driver \"rflex_sonar\" num_sonar_banks 3 num_sonars_in_bank [8 8 8] )\n"
-                           "power:0 ( driver \"rflex_power\" )\n"
-                           "bumper:0 ( driver \"rflex_bumper\" bumper_count 14 rflex_done 1 )\n";
-  core::instantiate_devices(config::ConfigFile::parse(text, "bench.cfg", core::load_options_for(registry, 6665)),
-                            registry, devices, clock, logger);
-  core::Device& position = *devices.find(6665, {protocol::kPositionCode, 0});
-
-  SetDirWatch watch;
-  position.driver().set_byte_trace(
-      [&watch](bool outgoing, std::span<const std::uint8_t> bytes, SteadyClock::time_point when) {
-        watch.on_bytes(outgoing, bytes, when);
-      });
-  for (core::Device* device : devices.all()) {
-    if (!device->subscribe()) {
-      std::fprintf(stderr, "rflex_bench: %s could not be subscribed\n", device->name().c_str());
-      return 1;
-    }
-  }
+  DriverRig rig("rflex_bench", "position:0 ( driver \"rflex_position\" rflex_serial_port \"" + robot.device_path() +
+                                   "\" odo_distance_conversion 103 odo_angle_conversion 35000 )\n"
+                                   "sonar:0 ( driver \"rflex_sonar\" num_sonar_banks 3 num_sonars_in_bank [8 8 8] )\n"
+                                   "power:0 ( driver \"rflex_power\" )\n"
+                                   "bumper:0 ( driver \"rflex_bumper\" bumper_count 14 rflex_done 1 )\n");
+  core::Device& position = rig.device(protocol::kPositionCode);
+  LineWatch watch(position);
+  if (!rig.subscribe_all()) return 1;
   auto& connection = dynamic_cast<drivers::rflex::RflexDeviceDriver&>(position.driver()).connection();
-  auto counter = [&connection](std::string_view name) -> std::uint64_t {
-    for (const auto& c : connection.counters()) {
-      if (c.name == name) return c.value;
-    }
-    return 0;
-  };
 
-  // 1. Following the robot.
-  std::this_thread::sleep_for(500ms);
-  auto cpu_before = connection.io_thread_cpu_time();
-  auto reports_before = counter("motion_reports");
-  auto wall_before = SteadyClock::now();
-  std::this_thread::sleep_for(std::chrono::seconds(options.seconds));
-  auto cpu_after = connection.io_thread_cpu_time();
-  const double idle_wall = milliseconds(SteadyClock::now() - wall_before);
-  const double idle_cpu = cpu_before && cpu_after ? milliseconds(*cpu_after - *cpu_before) : -1.0;
-  const auto cycles = (counter("motion_reports") - reports_before) / 2;
+  // A cycle is a pair of motion reports.
+  const FollowResult follow = follow_connection(connection, options, "motion_reports", 2);
 
-  // 2. Commands at random phases: latency to the wire, CPU meanwhile.
-  std::vector<double> latencies;
-  int missed = 0;
-  cpu_before = connection.io_thread_cpu_time();
-  wall_before = SteadyClock::now();
-  std::mt19937 random(1);
-  std::uniform_int_distribution<int> jitter_us(0, 20000);
-  for (int i = 0; i < options.commands; ++i) {
+  const CommandRun run = run_commands(connection, position, watch, options, 20ms, [](int i) {
     const int speed = 20 + 10 * (i % 40);  // mm/s, never the previous one
     protocol::PositionCommand command;
     command.xspeed = speed;
-    {
-      std::lock_guard lock(watch.mutex);
-      watch.wanted = speed * 103;
-      watch.seen_at.reset();
-    }
-    const auto sent = SteadyClock::now();
-    position.put_command(1, protocol::encode(command));
-    std::unique_lock lock(watch.mutex);
-    if (watch.changed.wait_for(lock, 1s, [&] { return watch.seen_at.has_value(); })) {
-      latencies.push_back(milliseconds(*watch.seen_at - sent));
-    } else {
-      ++missed;
-    }
-    lock.unlock();
-    std::this_thread::sleep_for(std::chrono::milliseconds(options.interval_ms) +
-                                std::chrono::microseconds(jitter_us(random)));
-  }
-  cpu_after = connection.io_thread_cpu_time();
-  const double busy_wall = milliseconds(SteadyClock::now() - wall_before);
-  const double busy_cpu = cpu_before && cpu_after ? milliseconds(*cpu_after - *cpu_before) : -1.0;
+    // The translation SET_DIR with this velocity (odo_distance_conversion 103).
+    const std::int64_t wanted = speed * 103;
+    return CommandTrial{protocol::encode(command), [wanted](std::span<const std::uint8_t> bytes,
+                                                            SteadyClock::time_point) {
+                          // One packet per write: 1B 02 02 00 07 0E axis v3 v2 v1 v0 ...
+                          if (bytes.size() < 11 || bytes[2] != 0x02 || bytes[4] != 0x07 || bytes[6] != 0x00) return false;
+                          const std::int64_t velocity =
+                              (std::int64_t{bytes[7]} << 24) | (bytes[8] << 16) | (bytes[9] << 8) | bytes[10];
+                          return velocity == wanted;
+                        }};
+  });
 
-  position.put_command(1, protocol::encode(protocol::PositionCommand{}));
-  devices.shutdown_all();
+  rig.stop_and_shut_down(position, protocol::encode(protocol::PositionCommand{}));
 
   std::printf("rflex_bench: B21r RFLEX emulated on %s, 100 ms bursts; position, sonar, power, bumper subscribed\n",
               robot.device_path().c_str());
-  std::printf("following the robot: %.1f s, %llu cycles (%.1f /s)\n", idle_wall / 1000.0,
-              static_cast<unsigned long long>(cycles), static_cast<double>(cycles) * 1000.0 / idle_wall);
-  std::printf("  I/O thread CPU: %.1f ms (%.2f %% of one core, %.1f us per cycle)\n", idle_cpu,
-              100.0 * idle_cpu / idle_wall, cycles > 0 ? 1000.0 * idle_cpu / static_cast<double>(cycles) : 0.0);
-  std::printf("commands: %d velocity commands every %d-%d ms over %.1f s\n", options.commands, options.interval_ms,
-              options.interval_ms + 20, busy_wall / 1000.0);
-  std::printf("  I/O thread CPU: %.1f ms (%.2f %% of one core)\n", busy_cpu, 100.0 * busy_cpu / busy_wall);
-  std::printf("  put_command -> SET_DIR written: p50 %.2f ms, p99 %.2f ms, max %.2f ms (%zu samples, %d missed)\n",
-              percentile(latencies, 0.5), percentile(latencies, 0.99), percentile(latencies, 1.0),
-              latencies.size(), missed);
+  print_follow(follow, "I/O thread");
+  print_commands(run, "SET_DIR written");
   return 0;
 }
