@@ -21,17 +21,20 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <initializer_list>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
 #include "core/device.hpp"
+#include "config/errors.hpp"
 #include "core/logger.hpp"
 #include "drivers/test_support.hpp"
 #include "emulators/runner/emulator_runner.hpp"
@@ -172,6 +175,40 @@ struct ConfiguredDevices {
   LogLines log;  // before builtin: the logger's sink refers to it
   BuiltinDevices builtin;  // last: devices shut down while the log still listens
 };
+
+// What loading `config_text` says is wrong with it, or "no error": a test
+// compares messages, places included, so a config that loads fails plainly.
+inline std::string config_error_of(const std::string& config_text) {
+  ConfiguredDevices devices;
+  try {
+    devices.load(config_text);
+  } catch (const config::ConfigError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+// The options table `readme` carries for driver `name`: the text between
+// "<!-- options NAME -->" (or "<!-- options -->" when `name` is empty) on a
+// line of its own and the next "<!-- end options -->". A README without them
+// gives a sentence saying so, which an EXPECT_EQ against the schema's table
+// then shows instead of an empty string.
+inline std::string readme_options_table(const std::filesystem::path& readme, std::string_view name) {
+  std::ifstream in(readme);
+  if (!in) return "cannot read " + readme.string();
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string all = text.str();
+  const std::string begin = name.empty() ? "<!-- options -->\n" : "<!-- options " + std::string(name) + " -->\n";
+  constexpr std::string_view kEnd = "<!-- end options -->";
+  const auto start = all.find(begin);
+  if (start == std::string::npos) return "no \"" + begin.substr(0, begin.size() - 1) + "\" in " + readme.string();
+  const auto end = all.find(kEnd, start + begin.size());
+  if (end == std::string::npos) {
+    return "no \"" + std::string(kEnd) + "\" after \"" + begin.substr(0, begin.size() - 1) + "\" in " + readme.string();
+  }
+  return all.substr(start + begin.size(), end - start - begin.size());
+}
 
 // The value of counter `name` as `driver` reports it.
 inline std::uint64_t counter(const core::Driver& driver, std::string_view name) {

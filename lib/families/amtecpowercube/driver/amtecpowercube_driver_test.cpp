@@ -9,12 +9,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <string>
 
-#include "config/errors.hpp"
 #include "drivers/driver_harness_test_support.hpp"
 #include "families/amtecpowercube/driver/powercube_options.hpp"
 #include "families/amtecpowercube/emulator/powercube_emulator.hpp"
@@ -185,35 +182,18 @@ TEST_F(PowercubeDriverTest, AModuleErrorIsLostAndTheWristStartedAgain) {
   EXPECT_TRUE(more_data(ptz(), 2));
 }
 
-std::string load_error(const std::string& section) {
-  ConfiguredDevices devices;
-  try {
-    devices.load(section);
-  } catch (const config::ConfigError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 TEST(PowercubeOptions, BadValuesAreRefusedAtTheirPlace) {
-  const std::string slow = load_error("ptz:0 ( driver \"amtecpowercube\" port \"/tmp/cube\" speed 0 )\n");
+  const std::string slow = config_error_of("ptz:0 ( driver \"amtecpowercube\" port \"/tmp/cube\" speed 0 )\n");
   EXPECT_NE(slow.find(":1:56: amtecpowercube: speed must be between 0.1 and 1000"), std::string::npos) << slow;
-  const std::string port = load_error("ptz:0 ( driver \"amtecpowercube\" port \"tcp:localhost\" )\n");
+  const std::string port = config_error_of("ptz:0 ( driver \"amtecpowercube\" port \"tcp:localhost\" )\n");
   EXPECT_NE(port.find(":1:38: amtecpowercube: port"), std::string::npos) << port;
 }
 
 // The README's options table is the schema's own (between "<!-- options
 // amtecpowercube -->" and "<!-- end options -->").
 TEST(PowercubeOptions, TheReadmeTableIsTheSchemas) {
-  std::ifstream in(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/amtecpowercube/README.md");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string all = text.str();
-  const std::string begin = "<!-- options amtecpowercube -->\n";
-  const auto start = all.find(begin);
-  const auto end = all.find("<!-- end options -->", start);
-  ASSERT_TRUE(start != std::string::npos && end != std::string::npos);
-  EXPECT_EQ(all.substr(start + begin.size(), end - start - begin.size()),
+  EXPECT_EQ(readme_options_table(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/amtecpowercube/README.md",
+                                 "amtecpowercube"),
             amtecpowercube::powercube_option_schema().markdown());
 }
 

@@ -10,7 +10,6 @@
 #include <memory>
 #include <string>
 
-#include "config/errors.hpp"
 #include "drivers/driver_harness_test_support.hpp"
 #include "families/cmucam2/emulator/cmucam2_emulator.hpp"
 #include "protocol/interfaces.hpp"
@@ -266,22 +265,12 @@ TEST_F(Cmucam2FreshDataTest, ReadsPacketsWithoutAPromptAfterThemToo) {
   EXPECT_TRUE(more_data(blobfinder(), 3));
 }
 
-std::string load_error(const std::string& section) {
-  ConfiguredDevices devices;
-  try {
-    devices.load(section);
-  } catch (const config::ConfigError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 TEST(Cmucam2Options, BadValuesAreRefusedAtTheirPlace) {
-  const std::string bound = load_error("blobfinder:0 ( driver \"cmucam2\" devicepath \"/tmp/c\" color0 [200 300 16 60 16 60] )\n");
+  const std::string bound = config_error_of("blobfinder:0 ( driver \"cmucam2\" devicepath \"/tmp/c\" color0 [200 300 16 60 16 60] )\n");
   EXPECT_NE(bound.find(":1:65: cmucam2: color0 bounds must be whole numbers from 0 to 255"), std::string::npos) << bound;
-  const std::string order = load_error("blobfinder:0 ( driver \"cmucam2\" devicepath \"/tmp/c\" color0 [240 200 16 60 16 60] )\n");
+  const std::string order = config_error_of("blobfinder:0 ( driver \"cmucam2\" devicepath \"/tmp/c\" color0 [240 200 16 60 16 60] )\n");
   EXPECT_NE(order.find("cmucam2: color0 each minimum must not exceed its maximum"), std::string::npos) << order;
-  const std::string many = load_error("blobfinder:0 ( driver \"cmucam2\" devicepath \"/tmp/c\" num_blobs 11 )\n");
+  const std::string many = config_error_of("blobfinder:0 ( driver \"cmucam2\" devicepath \"/tmp/c\" num_blobs 11 )\n");
   EXPECT_NE(many.find("cmucam2: num_blobs"), std::string::npos) << many;
 }
 

@@ -9,12 +9,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <string>
 
-#include "config/errors.hpp"
 #include "drivers/driver_harness_test_support.hpp"
 #include "families/er1/driver/er1_options.hpp"
 #include "families/er1/emulator/er1_emulator.hpp"
@@ -180,37 +177,21 @@ TEST_F(Er1DriverTest, DebugLogsTheOdometry) {
   EXPECT_FALSE(devices.log.first_with({"odometry x 0.000 m"}).empty()) << devices.log.all();
 }
 
-std::string load_error(const std::string& section) {
-  ConfiguredDevices devices;
-  try {
-    devices.load(section);
-  } catch (const config::ConfigError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 TEST(Er1Options, BadValuesAreRefusedAtTheirPlace) {
-  const std::string dir = load_error("position:0 ( driver \"er1_position\" port \"/tmp/er1\" motor_dir 0 )\n");
+  const std::string dir = config_error_of("position:0 ( driver \"er1_position\" port \"/tmp/er1\" motor_dir 0 )\n");
   EXPECT_NE(dir.find(":1:62: er1_position: motor_dir must be one of -1, 1"), std::string::npos) << dir;
-  const std::string axle = load_error("position:0 ( driver \"er1_position\" axle 0 )\n");
+  const std::string axle = config_error_of("position:0 ( driver \"er1_position\" axle 0 )\n");
   EXPECT_NE(axle.find(":1:41: er1_position: axle must be between"), std::string::npos) << axle;
-  EXPECT_EQ(load_error("position:0 ( driver \"er1_position\" port \"/dev/usb/ttyUSB1\" axle 0.4 motor_dir -1 debug 1 )\n"),
+  EXPECT_EQ(config_error_of("position:0 ( driver \"er1_position\" port \"/dev/usb/ttyUSB1\" axle 0.4 motor_dir -1 debug 1 )\n"),
             "no error");
 }
 
 // The README's options table is the schema's own (between "<!-- options
 // er1_position -->" and "<!-- end options -->").
 TEST(Er1Options, TheReadmeTableIsTheSchemas) {
-  std::ifstream in(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/er1/README.md");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string all = text.str();
-  const std::string begin = "<!-- options er1_position -->\n";
-  const auto start = all.find(begin);
-  const auto end = all.find("<!-- end options -->", start);
-  ASSERT_TRUE(start != std::string::npos && end != std::string::npos) << er1::er1_option_schema().markdown();
-  EXPECT_EQ(all.substr(start + begin.size(), end - start - begin.size()), er1::er1_option_schema().markdown());
+  EXPECT_EQ(readme_options_table(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/er1/README.md",
+                                 "er1_position"),
+            er1::er1_option_schema().markdown());
 }
 
 TEST_F(Er1DriverTest, RefusesTheSubscriptionWhenThePortIsGone) {

@@ -8,12 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <memory>
 #include <string>
 
-#include "config/errors.hpp"
 #include "drivers/builtin.hpp"
 #include "drivers/driver_harness_test_support.hpp"
 #include "families/flockofbirds/driver/flockofbirds_options.hpp"
@@ -108,37 +105,17 @@ TEST_F(FlockDriverTest, ReadsPlayer15sTermiosBaudConstants) {
   EXPECT_TRUE(next_data<Position3dData>(tracker()));
 }
 
-std::string load_error(const std::string& section) {
-  ConfiguredDevices devices;
-  try {
-    devices.load(section);
-  } catch (const config::ConfigError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 TEST(FlockOptions, BadValuesAreRefusedAtTheirPlace) {
-  const std::string bad_baud = load_error("position3d:0 ( driver \"flockofbirds\" port \"/tmp/bird\" baudrate 1000 )\n");
+  const std::string bad_baud = config_error_of("position3d:0 ( driver \"flockofbirds\" port \"/tmp/bird\" baudrate 1000 )\n");
   EXPECT_NE(bad_baud.find(":1:64: flockofbirds: baudrate must be 2400"), std::string::npos) << bad_baud;
-  const std::string bad_port = load_error("position3d:0 ( driver \"flockofbirds\" port \"tcp:localhost\" )\n");
+  const std::string bad_port = config_error_of("position3d:0 ( driver \"flockofbirds\" port \"tcp:localhost\" )\n");
   EXPECT_NE(bad_port.find(":1:43: flockofbirds: port is not a serial port"), std::string::npos) << bad_port;
 }
 
-std::string readme_options_table() {
-  std::ifstream in(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/flockofbirds/README.md");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string all = text.str();
-  const std::string begin = "<!-- options flockofbirds -->\n";
-  const auto start = all.find(begin);
-  const auto end = all.find("<!-- end options -->", start);
-  if (start == std::string::npos || end == std::string::npos) return "no table";
-  return all.substr(start + begin.size(), end - start - begin.size());
-}
-
 TEST(FlockOptions, TheReadmeTableIsGeneratedFromTheSchema) {
-  EXPECT_EQ(readme_options_table(), flockofbirds::flockofbirds_option_schema().markdown());
+  EXPECT_EQ(readme_options_table(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/flockofbirds/README.md",
+                                 "flockofbirds"),
+            flockofbirds::flockofbirds_option_schema().markdown());
 }
 
 TEST(FlockOptions, RegisteredAsPlayer15DidWithItsDocs) {

@@ -13,9 +13,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
-#include <fstream>
 #include <mutex>
-#include <sstream>
 
 #include "config/config_file.hpp"
 #include "config/errors.hpp"
@@ -311,20 +309,10 @@ TEST(GarminNmeaOptions, BadValuesAreReportedWhereTheyAre) {
   EXPECT_NE(group.find("multicast"), std::string::npos) << group;
 }
 
-std::string readme_table() {
-  std::ifstream in(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/garminnmea/README.md");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string all = text.str();
-  const std::string begin = "<!-- options garminnmea -->\n";
-  const auto start = all.find(begin);
-  const auto end = all.find("<!-- end options -->", start);
-  if (start == std::string::npos || end == std::string::npos) return "no table";
-  return all.substr(start + begin.size(), end - start - begin.size());
-}
-
 TEST(GarminNmeaOptions, TheReadmeTableIsTheSchemas) {
-  EXPECT_EQ(readme_table(), garminnmea::garminnmea_option_schema().markdown());
+  EXPECT_EQ(readme_options_table(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/garminnmea/README.md",
+                                 "garminnmea"),
+            garminnmea::garminnmea_option_schema().markdown());
 }
 
 // --- DGPS corrections

@@ -15,7 +15,6 @@
 #include <numbers>
 #include <string>
 
-#include "config/errors.hpp"
 #include "drivers/driver_harness_test_support.hpp"
 #include "families/khepera/driver/khepera_options.hpp"
 #include "families/khepera/emulator/khepera_emulator.hpp"
@@ -210,27 +209,17 @@ TEST_F(KheperaDriverTest, ARobotStillDrivingIsStoppedWhenTheLastDeviceLeaves) {
   EXPECT_TRUE(robot.wait_until([](KheperaEmulator& e) { return e.speeds() == WheelSpeeds{}; }));
 }
 
-std::string load_error(const std::string& text) {
-  ConfiguredDevices devices;
-  try {
-    devices.load(text);
-  } catch (const config::ConfigError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 TEST(KheperaOptions, BadValuesAreRefusedAtTheirPlace) {
-  const auto tiny = load_error("position:0 ( driver \"khepera_position\" encoder_res 0 )\n");
+  const auto tiny = config_error_of("position:0 ( driver \"khepera_position\" encoder_res 0 )\n");
   EXPECT_NE(tiny.find(":1:52: khepera_position: encoder_res must be between"), std::string::npos) << tiny;
   const auto short_poses =
-      load_error("ir:0 ( driver \"khepera_ir\" port \"/tmp/k\" pose_count 2 poses [1 2 3] )\n");
+      config_error_of("ir:0 ( driver \"khepera_ir\" port \"/tmp/k\" pose_count 2 poses [1 2 3] )\n");
   EXPECT_NE(short_poses.find("khepera_ir: poses needs x, y and heading"), std::string::npos) << short_poses;
-  const auto differ = load_error(
+  const auto differ = config_error_of(
       "position:0 ( driver \"khepera_position\" port \"/tmp/a\" )\nir:0 ( driver \"khepera_ir\" port \"/tmp/b\" )\n");
   EXPECT_NE(differ.find(":2:"), std::string::npos) << differ;
   // 1.5's names: scale (the manual's) and scale_factor (the source's).
-  EXPECT_EQ(load_error("position:0 ( driver \"khepera_position\" scale 5 )\n"), "no error");
+  EXPECT_EQ(config_error_of("position:0 ( driver \"khepera_position\" scale 5 )\n"), "no error");
 }
 
 // The README's option tables are the schemas' own.

@@ -2,10 +2,9 @@
 // 1.5's form (no robot is opened: nothing subscribes).
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
 
 #include "config/errors.hpp"
+#include "drivers/driver_harness_test_support.hpp"
 #include "families/p2os/driver/p2os_options.hpp"
 #include "families/p2os/driver/p2os_test_support.hpp"
 
@@ -136,16 +135,8 @@ TEST(P2osOptions, ABadTcpPortIsRefusedOnEverySectionThatWritesIt) {
 // The README's table is the schema's own (between "<!-- options
 // p2os_position -->" and "<!-- end options -->").
 TEST(P2osOptions, TheReadmeTableIsGeneratedFromTheSchema) {
-  std::ifstream in(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/p2os/driver/README.md");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string all = text.str();
-  const std::string begin = "<!-- options p2os_position -->\n";
-  const auto start = all.find(begin);
-  const auto end = all.find("<!-- end options -->", start);
-  ASSERT_NE(start, std::string::npos);
-  ASSERT_NE(end, std::string::npos);
-  EXPECT_EQ(all.substr(start + begin.size(), end - start - begin.size()),
+  EXPECT_EQ(testing::readme_options_table(
+                std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/p2os/driver/README.md", "p2os_position"),
             p2os::p2os_option_schema(p2os::P2osRole::position).markdown());
 }
 

@@ -11,7 +11,6 @@
 #include <memory>
 #include <string>
 
-#include "config/errors.hpp"
 #include "drivers/driver_harness_test_support.hpp"
 #include "families/ptu46/driver/ptu46_options.hpp"
 #include "families/ptu46/emulator/ptu46_emulator.hpp"
@@ -123,23 +122,13 @@ TEST_F(Ptu46DriverTest, ReadsPlayer15sTermiosBaudConstants) {
   EXPECT_TRUE(next_data<protocol::PtzData>(ptz()));
 }
 
-std::string load_error(const std::string& section) {
-  ConfiguredDevices devices;
-  try {
-    devices.load(section);
-  } catch (const config::ConfigError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 TEST(Ptu46Options, BadValuesAreRefusedAtTheirPlace) {
-  EXPECT_NE(load_error("ptz:0 ( driver \"ptu46\" port \"/tmp/ptu\" baudrate 9601 )\n").find(":1:49: ptu46: baudrate must be 600"),
+  EXPECT_NE(config_error_of("ptz:0 ( driver \"ptu46\" port \"/tmp/ptu\" baudrate 9601 )\n").find(":1:49: ptu46: baudrate must be 600"),
             std::string::npos)
-      << load_error("ptz:0 ( driver \"ptu46\" port \"/tmp/ptu\" baudrate 9601 )\n");
-  EXPECT_NE(load_error("ptz:0 ( driver \"ptu46\" port \"tcp:localhost\" )\n").find(":1:29: ptu46: port is not a serial port"),
+      << config_error_of("ptz:0 ( driver \"ptu46\" port \"/tmp/ptu\" baudrate 9601 )\n");
+  EXPECT_NE(config_error_of("ptz:0 ( driver \"ptu46\" port \"tcp:localhost\" )\n").find(":1:29: ptu46: port is not a serial port"),
             std::string::npos)
-      << load_error("ptz:0 ( driver \"ptu46\" port \"tcp:localhost\" )\n");
+      << config_error_of("ptz:0 ( driver \"ptu46\" port \"tcp:localhost\" )\n");
 }
 
 TEST_F(Ptu46DriverTest, RefusesTheSubscriptionWhenNothingAnswers) {

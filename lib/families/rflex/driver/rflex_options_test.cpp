@@ -3,10 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "config/errors.hpp"
+#include "drivers/driver_harness_test_support.hpp"
 #include "drivers/test_support.hpp"
 #include "families/rflex/driver/rflex_motion.hpp"
 #include "families/rflex/driver/rflex_options.hpp"
@@ -124,19 +123,11 @@ namespace rflex_options_readme_test {
 // The README's tables are the schemas' own (between "<!-- options
 // rflex_<role> -->" and "<!-- end options -->").
 TEST(RflexOptions, TheReadmeTablesAreGeneratedFromTheSchemas) {
-  std::ifstream in(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/rflex/README.md");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string all = text.str();
+  const std::string readme = std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/rflex/README.md";
   for (const rflex::RflexRole role : {rflex::RflexRole::position, rflex::RflexRole::sonar, rflex::RflexRole::ir,
                                       rflex::RflexRole::bumper, rflex::RflexRole::power}) {
-    const std::string begin = "<!-- options " + std::string(rflex::driver_name(role)) + " -->\n";
-    const auto start = all.find(begin);
-    const auto end = all.find("<!-- end options -->", start);
-    ASSERT_NE(start, std::string::npos) << begin;
-    ASSERT_NE(end, std::string::npos);
     const std::string table = rflex::rflex_option_schema(role).markdown();
-    EXPECT_EQ(all.substr(start + begin.size(), end - start - begin.size()), table) << begin;
+    EXPECT_EQ(testing::readme_options_table(readme, rflex::driver_name(role)), table) << rflex::driver_name(role);
   }
 }
 

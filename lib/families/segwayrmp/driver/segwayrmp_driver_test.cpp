@@ -8,13 +8,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <memory>
 #include <string>
 #include <thread>
 
-#include "config/errors.hpp"
 #include "drivers/driver_harness_test_support.hpp"
 #include "families/segwayrmp/driver/rmp_options.hpp"
 #include "families/segwayrmp/emulator/segwayrmp_emulator.hpp"
@@ -205,39 +202,23 @@ TEST_F(SegwayRmpDriverTest, ASilentRobotRefusesTheSubscriptionWithTheReason) {
   EXPECT_FALSE(position().subscribe());
 }
 
-std::string load_error(const std::string& text) {
-  ConfiguredDevices devices;
-  try {
-    devices.load(text);
-  } catch (const config::ConfigError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 TEST(SegwayRmpOptions, KvaserIsRefusedAtItsPlaceWithTheWayOut) {
-  const std::string error = load_error("position:0 ( driver \"rmpposition\" canio \"kvaser\" )\n");
+  const std::string error = config_error_of("position:0 ( driver \"rmpposition\" canio \"kvaser\" )\n");
   EXPECT_NE(error.find("test.cfg:1:41: rmpposition: canio kvaser"), std::string::npos) << error;
   EXPECT_NE(error.find("canio \"socketcan\" and device \"can0\""), std::string::npos) << error;
   EXPECT_NE(error.find("slcan"), std::string::npos) << error;
-  const std::string rate = load_error("position:0 ( driver \"segwayrmp\" canio \"slcan\" bitrate 400000 )\n");
+  const std::string rate = config_error_of("position:0 ( driver \"segwayrmp\" canio \"slcan\" bitrate 400000 )\n");
   EXPECT_NE(rate.find("bitrate"), std::string::npos) << rate;
-  const std::string differ = load_error(
+  const std::string differ = config_error_of(
       "position:0 ( driver \"rmpposition\" canio \"slcan\" )\npower:0 ( driver \"rmppower\" canio \"socketcan\" )\n");
   EXPECT_NE(differ.find("canio"), std::string::npos) << differ;
 }
 
 TEST(SegwayRmpOptions, TheReadmeTableIsTheSchemas) {
-  std::ifstream in(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/segwayrmp/README.md");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string all = text.str();
-  const std::string begin = "<!-- options segwayrmp -->\n";
-  const auto start = all.find(begin);
-  const auto end = all.find("<!-- end options -->", start);
   const std::string table = segwayrmp::rmp_option_schema().markdown();
-  ASSERT_TRUE(start != std::string::npos && end != std::string::npos) << table;
-  EXPECT_EQ(all.substr(start + begin.size(), end - start - begin.size()), table);
+  EXPECT_EQ(readme_options_table(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/segwayrmp/README.md",
+                                 "segwayrmp"),
+            table);
 }
 
 TEST(SegwayRmpOptions, SocketCanWithoutTheInterfaceRefusesTheSubscriptionNamingIt) {

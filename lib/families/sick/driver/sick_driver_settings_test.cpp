@@ -4,16 +4,14 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <numbers>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "config/errors.hpp"
-#include "families/sick/driver/sick_laser_driver.hpp"
+#include "drivers/driver_harness_test_support.hpp"
 #include "drivers/test_support.hpp"
+#include "families/sick/driver/sick_laser_driver.hpp"
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::drivers::sick_laser {
@@ -25,15 +23,7 @@ SickDriverSettings settings_of(const std::string& section) {
   return dynamic_cast<SickLaserDriver&>(builtin.device(protocol::kLaserCode).driver()).settings();
 }
 
-std::string error_of(const std::string& section) {
-  try {
-    testing::BuiltinDevices builtin;
-    builtin.load(section + "\n");
-  } catch (const config::ConfigError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+std::string error_of(const std::string& section) { return testing::config_error_of(section + "\n"); }
 
 TEST(SickDriverSettings, Lms200DefaultsAreThoseOfThe15Manual) {
   const SickDriverSettings s = settings_of("laser ( driver \"sicklms200\" )");
@@ -126,15 +116,8 @@ TEST(SickDriverSettings, ABadPortIsAnErrorAtItsValue) {
 // The README's options tables are the schemas' own (between the markers
 // "<!-- options DRIVER -->" and "<!-- end options -->").
 std::string readme_table(const std::string& driver) {
-  std::ifstream in(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/sick/driver/README.md");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string all = text.str();
-  const std::string begin = "<!-- options " + driver + " -->\n";
-  const auto start = all.find(begin);
-  const auto end = all.find("<!-- end options -->", start);
-  if (start == std::string::npos || end == std::string::npos) return "no table for " + driver;
-  return all.substr(start + begin.size(), end - start - begin.size());
+  return testing::readme_options_table(
+      std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/sick/driver/README.md", driver);
 }
 
 TEST(SickDriverSettings, TheReadmeTablesAreGeneratedFromTheSchemas) {

@@ -8,12 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <string>
 
-#include "config/errors.hpp"
 #include "drivers/driver_harness_test_support.hpp"
 #include "families/sonyevid30/driver/sonyevid30_options.hpp"
 #include "families/sonyevid30/emulator/evid30_emulator.hpp"
@@ -213,36 +210,17 @@ TEST_P(Sonyevid30ErrorTest, ErrorPacketsAreReportedAndTheDriverGoesOn) {
 INSTANTIATE_TEST_SUITE_P(Faults, Sonyevid30ErrorTest,
                          ::testing::Values(ErringCamera::Fault::refuse_commands, ErringCamera::Fault::fail_after_ack));
 
-std::string load_error(const std::string& text) {
-  ConfiguredDevices devices;
-  try {
-    devices.load(text);
-  } catch (const config::ConfigError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 TEST(Sonyevid30Options, BadValuesAreRefusedAtTheirPlace) {
   const std::string reversed = "ptz:0 ( driver \"sonyevid30\" port \"/tmp/cam\" fov [30 3] )\n";
-  EXPECT_NE(load_error(reversed).find(":1:50: sonyevid30: fov must be"), std::string::npos) << load_error(reversed);
+  EXPECT_NE(config_error_of(reversed).find(":1:50: sonyevid30: fov must be"), std::string::npos) << config_error_of(reversed);
   const std::string negative = "ptz:0 ( driver \"sonyevid30\" port \"/tmp/cam\" movement -1 )\n";
-  EXPECT_NE(load_error(negative).find("sonyevid30: movement"), std::string::npos) << load_error(negative);
-  EXPECT_EQ(load_error("ptz:0 ( driver \"sonyevid30\" port \"/tmp/cam\" fov [3 30] movement 1 )\n"), "no error");
+  EXPECT_NE(config_error_of(negative).find("sonyevid30: movement"), std::string::npos) << config_error_of(negative);
+  EXPECT_EQ(config_error_of("ptz:0 ( driver \"sonyevid30\" port \"/tmp/cam\" fov [3 30] movement 1 )\n"), "no error");
 }
 
 // The README's options table is the schema's own (between "<!-- options -->" and "<!-- end options -->").
 TEST(Sonyevid30Options, TheReadmeTableIsGeneratedFromTheSchema) {
-  std::ifstream in(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/sonyevid30/README.md");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string all = text.str();
-  const std::string begin = "<!-- options -->\n";
-  const auto start = all.find(begin);
-  const auto end = all.find("<!-- end options -->", start);
-  ASSERT_NE(start, std::string::npos);
-  ASSERT_NE(end, std::string::npos);
-  EXPECT_EQ(all.substr(start + begin.size(), end - start - begin.size()),
+  EXPECT_EQ(readme_options_table(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/sonyevid30/README.md", ""),
             sonyevid30::sonyevid30_option_schema().markdown());
 }
 

@@ -8,12 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <string>
 
-#include "config/errors.hpp"
 #include "drivers/driver_harness_test_support.hpp"
 #include "families/trogdor/driver/trogdor_options.hpp"
 #include "families/trogdor/emulator/trogdor_emulator.hpp"
@@ -115,32 +112,16 @@ TEST_F(TrogdorDriverTest, StopsAndReleasesTheRobotAtTheLastUnsubscription) {
   EXPECT_TRUE(robot.wait_until([](TrogdorEmulator& e) { return e.velocities() == hw::WheelPair{} && !e.initialised(); }));
 }
 
-std::string load_error(const std::string& section) {
-  ConfiguredDevices devices;
-  try {
-    devices.load(section);
-  } catch (const config::ConfigError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 TEST(TrogdorOptions, ThePortIsCheckedAtItsPlace) {
-  const std::string error = load_error("position:0 ( driver \"trogdor\" port \"tcp:localhost\" )\n");
+  const std::string error = config_error_of("position:0 ( driver \"trogdor\" port \"tcp:localhost\" )\n");
   EXPECT_NE(error.find(":1:36: trogdor: port is not a serial port"), std::string::npos) << error;
 }
 
 // The README's options table is the schema's own.
 TEST(TrogdorOptions, TheReadmeTableIsTheSchemas) {
-  std::ifstream in(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/trogdor/README.md");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string all = text.str();
-  const std::string begin = "<!-- options trogdor -->\n";
-  const auto start = all.find(begin);
-  const auto end = all.find("<!-- end options -->", start);
-  ASSERT_TRUE(start != std::string::npos && end != std::string::npos);
-  EXPECT_EQ(all.substr(start + begin.size(), end - start - begin.size()), trogdor::trogdor_option_schema().markdown());
+  EXPECT_EQ(readme_options_table(std::string(PLAYERKIT_TEST_DATA_DIR) + "/../../lib/families/trogdor/README.md",
+                                 "trogdor"),
+            trogdor::trogdor_option_schema().markdown());
 }
 
 TEST_F(TrogdorDriverTest, RefusesTheSubscriptionWhenNothingAnswers) {
