@@ -1,6 +1,8 @@
 // "Who are you?" on a line, ER1 style: read both motors' position counts,
 // which changes nothing (the robot keeps still and its odometry whole).
-// Each answer must be the 6 bytes of a position reply, summing to 0.
+// Each answer must be the 6 bytes of a position reply, summing to 0, with
+// status 0: a sum of 0 alone turns up in any stream of text (an NMEA
+// receiver's sentences were taken for an ER1), a NUL byte never does.
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -26,7 +28,7 @@ std::optional<Identification> probe_er1(const ProbeContext& line) {
          .bytes = er1::read_position(motor),
          .matcher = {},
          .timeout = links::time_until(motor == er1::Motor::port0 ? line.first_reply : line.finish)});
-    if (!answer.replied()) return std::nullopt;
+    if (!answer.replied() || answer.telegram.empty() || answer.telegram[0] != 0x00) return std::nullopt;
     counts[static_cast<int>(motor)] = er1::position_count(answer.telegram).value_or(0);
   }
   char model[120];
