@@ -81,6 +81,7 @@ int run(const bench::NavBenchOptions& options) {
 int main(int argc, char** argv) {
   CLI::App app{"nav-bench: the navigation loop (amcl, wavefront, vfh) driven to random goals in a simulated world"};
   app.footer(kFooter);
+  app.set_version_flag("--version", std::string("nav-bench (playerkit) ") + PLAYERKIT_VERSION);
   bench::NavBenchCommandLine line;
   app.add_option("world", line.world, "Stage world file (its first robot with a laser is driven)")->required();
   app.add_option("--config", line.config, "configuration with the amcl, vfh and wavefront sections")->required();
