@@ -144,10 +144,11 @@ TEST(P2osFamily, ProbeClosesARobotStillConnectedFromAnEarlierSession) {
       {.link = *session, .baud = 9600, .first_reply = links::deadline_in(2s), .finish = links::deadline_in(4s)}));
   namespace p2os = hardware::p2os;
   session->write_all(p2os::command_frame(p2os::Command::plain(p2os::command::open)), links::deadline_in(1s));
-  for (int i = 0; i < 100 && !robot.with_emulator<emulators::DeviceEmulator>([](emulators::DeviceEmulator& e) {
-                                return e.describe().find("connected,") != std::string::npos;
-                              });
-       ++i) {
+  const auto deadline = std::chrono::steady_clock::now() + 10s;
+  while (std::chrono::steady_clock::now() < deadline &&
+         !robot.with_emulator<emulators::DeviceEmulator>([](emulators::DeviceEmulator& e) {
+           return e.describe().find("connected,") != std::string::npos;
+         })) {
     std::this_thread::sleep_for(10ms);
   }
   ASSERT_TRUE(robot.with_emulator<emulators::P2osRobotEmulator>([](emulators::P2osRobotEmulator& e) {
