@@ -32,10 +32,11 @@ teardown() {
   [ "$(jq -r '.data.size[0]' <<<"$output")" -eq 450 ]
   [[ "$stderr" == *"> FD FC FB"* ]]
 
-  # 500 mm/s: 33 units a wheel ('v', 33, 33, XOR), reported back as 498 mm/s.
+  # 500 mm/s: 33 units a wheel ('v', 33, 33, XOR), reported back as 498 mm/s
+  # (300 readings, about 5 s: a slow, sanitized run takes a while to show it).
   run --separate-stderr bash -c "printf '%s\n' \
     '{\"device\":\"position:0\",\"data\":{\"xspeed\":500}}' \
-    | timeout 60 '$player_drivers' run trogdor 'port=$robot' --stdin -n 30 --format json --trace"
+    | timeout 60 '$player_drivers' run trogdor 'port=$robot' --stdin -n 300 --format json --trace"
   [ "$status" -eq 0 ]
   [[ "$stderr" == *"> 76 21 00 00 00 21 00 00 00 76"* ]]
   [ "$(jq -s '[.[] | select(.data.xspeed == 498)] | length' <<<"$output")" -gt 0 ]

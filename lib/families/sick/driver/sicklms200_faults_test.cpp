@@ -149,7 +149,10 @@ TEST(Sicklms200Faults, TheByteTraceSeesBothDirectionsAcrossSubscriptions) {
   std::vector<std::uint8_t> out;
   std::size_t in = 0;
   LaserRig rig;
-  rig.load("rate 38400");
+  // Subscribed twice, each time with the laser's whole start-up: a generous
+  // reply_timeout (it costs nothing while the laser answers) so that a slow,
+  // sanitized run does not take a late reply for a missing laser.
+  rig.load("rate 38400", "reply_timeout 2 retry_interval 0.2");
   ASSERT_TRUE(rig.driver().set_byte_trace(
       [&](bool outgoing, std::span<const std::uint8_t> bytes, std::chrono::steady_clock::time_point) {
         std::lock_guard lock(mutex);
