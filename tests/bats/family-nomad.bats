@@ -83,7 +83,7 @@ start_nomad() {
 }
 
 @test "1.5's form is read unchanged, and a bad port is refused at its place" {
-  printf '%s\n' 'nomad:0 ( driver "nomad" serial_device "/dev/ttyS0" serial_speed 9600 )' \
+  printf '%s\n' 'nomad:0 ( driver "nomad" serial_device "/tmp/nomad-direct-serial" serial_speed 9600 )' \
     'position:0 ( driver "nomad_position" nomad_index 0 )' \
     'sonar:0 ( driver "nomad_sonar" nomad_index 0 )' >"$BATS_TEST_TMPDIR/nomad15.cfg"
   run "$player_serve" --check "$BATS_TEST_TMPDIR/nomad15.cfg"

@@ -100,7 +100,7 @@ TEST_F(NomadDriverTest, TheRobotIsStoppedWhenTheLastClientLeaves) {
 TEST_F(NomadDriverTest, HostAndPortAsSeparateOptions) {
   const std::string port = robot.port();  // tcp:127.0.0.1:N
   const std::string number = port.substr(port.rfind(':') + 1);
-  start("host \"127.0.0.1\" port " + number + " serial_device \"/dev/ttyS0\" serial_speed 9600 ");
+  start("host \"127.0.0.1\" port " + number + " serial_device \"/tmp/nomad-direct-serial\" serial_speed 9600 ");
   EXPECT_TRUE(next_data<protocol::NomadData>(nomad()));
 }
 
@@ -180,7 +180,7 @@ TEST(NomadOptions, TheServerIsOnThisMachineAtPort7019ByDefault) {
   EXPECT_FALSE(nomad::machine_name().empty());
   EXPECT_EQ(nomad::server_port_problem("7019"), "");
   EXPECT_EQ(nomad::server_port_problem("tcp:[::1]:7019"), "");
-  EXPECT_NE(nomad::server_port_problem("/dev/ttyS0"), "");
+  EXPECT_NE(nomad::server_port_problem("/tmp/nomad-direct-serial"), "");
 }
 
 }  // namespace nomad_driver_test
