@@ -51,7 +51,7 @@ teardown() {
   start_emulator "$BATS_TEST_TMPDIR/emulate.out" "$BATS_TEST_TMPDIR/emulate.err" er1 --link "$robot" motor_dir=-1
   run --separate-stderr bash -c "printf '%s\n' \
     '{\"device\":\"position:0\",\"data\":{\"yawspeed\":30}}' \
-    | timeout 60 '$player_drivers' run er1_position 'port=$robot' motor_dir=-1 --stdin -n 600 --format json"
+    | timeout 60 '$player_drivers' run er1_position 'port=$robot' motor_dir=-1 --stdin -n 60 --format json"
   [ "$status" -eq 0 ]
   [ "$(jq -s '[.[] | select(.data.yaw >= 5 and .data.yaw < 180)] | length' <<<"$output")" -gt 0 ]
   stop_cleanly "$emulator_pid"
