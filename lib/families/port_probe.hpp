@@ -3,8 +3,9 @@
 // answers on a port. First what most often goes wrong
 // (links::describe_open_problem: missing, permission, held by another
 // process), without opening it; then each family's probes at their baud
-// rates within a budget (10 s): every probe's likeliest rate first, then
-// every probe's second, and so on; probes of one rank in registration order.
+// rates within a budget (30 s by default, room for thirty families' first
+// tries): every probe's likeliest rate first, then every probe's second,
+// and so on; probes of one rank in registration order.
 //
 // A tcp:HOST:PORT port has no speed of its own: each probe is asked once.
 
@@ -31,7 +32,7 @@ std::vector<ProbeAttempt> probe_attempts(const FamilyRegistry& families, bool se
 struct ProbeSettings {
   std::chrono::milliseconds first_reply{400};  // a device's answer to an attempt's first telegram
   std::chrono::milliseconds follow_up{1500};   // the rest of the exchange once it answered
-  std::chrono::milliseconds budget{10000};     // the whole port
+  std::chrono::milliseconds budget{30000};     // the whole port
   // -v: one line per attempt.
   std::function<void(std::string_view)> progress;
 };

@@ -37,8 +37,8 @@ ProbeOptions make_probe_options(const ProbeCommandLine& command_line) {
       throw UsageError("probe: port " + command_line.ports[i] + " is named twice");
     }
   }
-  if (!std::isfinite(command_line.budget) || command_line.budget < 1.0 || command_line.budget > 60.0) {
-    throw UsageError("--budget: 1 to 60 seconds a port");
+  if (!std::isfinite(command_line.budget) || command_line.budget < 1.0 || command_line.budget > 120.0) {
+    throw UsageError("--budget: 1 to 120 seconds a port");
   }
   ProbeOptions options;
   options.ports = command_line.ports;

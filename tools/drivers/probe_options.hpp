@@ -23,7 +23,7 @@ struct ProbeCommandLine {
   std::vector<std::string> ports;
   bool json = false;
   bool verbose = false;
-  double budget = 10.0;  // seconds per port
+  double budget = 30.0;  // seconds per port: room for thirty families' likeliest rates
 };
 
 struct ProbeOptions {
@@ -33,7 +33,7 @@ struct ProbeOptions {
   bool verbose = false;
 };
 
-// Throws UsageError: no port, a port named twice, a budget outside 1..60 s.
+// Throws UsageError: no port, a port named twice, a budget outside 1..120 s.
 ProbeOptions make_probe_options(const ProbeCommandLine& command_line);
 
 }  // namespace playerkit::player_drivers

@@ -35,7 +35,7 @@ TEST(ProbeOptions, PortsAndBudget) {
   EXPECT_EQ(usage_error_of([] { make_probe_options({{"/dev/ttyS0", "/dev/ttyS0"}, false, false, 10.0}); }),
             "probe: port /dev/ttyS0 is named twice");
   EXPECT_EQ(usage_error_of([] { make_probe_options({{"/dev/ttyS0"}, false, false, 0.1}); }),
-            "--budget: 1 to 60 seconds a port");
+            "--budget: 1 to 120 seconds a port");
 }
 
 }  // namespace probe_options_test
