@@ -8,7 +8,7 @@
 load helpers
 
 teardown() {
-  kill_left_running "${emulator_pid:-}" "${server_pid:-}"
+  kill_left_running "${run_pid:-}" "${emulator_pid:-}" "${server_pid:-}"
 }
 
 @test "an ER1: emulate, probe, run, a velocity command on the line" {
@@ -46,14 +46,30 @@ teardown() {
   stop_cleanly "$emulator_pid"
 }
 
-@test "an ER1 with its left motor on port 1: motor_dir -1 turns it the way asked" {
+@test "an ER1 with its left motor on port 1: motor_dir -1 drives it forward when asked" {
+  # Swapped motors leave a pure turn unchanged (each motor is mirrored too)
+  # but reverse a straight drive, and the driver's own odometry cannot tell:
+  # only the emulated robot's true pose (--stats) shows which way it went.
   robot="$BATS_TEST_TMPDIR/er1"
-  start_emulator "$BATS_TEST_TMPDIR/emulate.out" "$BATS_TEST_TMPDIR/emulate.err" er1 --link "$robot" motor_dir=-1
-  run --separate-stderr bash -c "printf '%s\n' \
-    '{\"device\":\"position:0\",\"data\":{\"yawspeed\":30}}' \
-    | timeout 60 '$player_drivers' run er1_position 'port=$robot' motor_dir=-1 --stdin -n 60 --format json"
-  [ "$status" -eq 0 ]
-  [ "$(jq -s '[.[] | select(.data.yaw >= 5 and .data.yaw < 180)] | length' <<<"$output")" -gt 0 ]
+  start_emulator "$BATS_TEST_TMPDIR/emulate.out" "$BATS_TEST_TMPDIR/emulate.err" er1 --link "$robot" motor_dir=-1 --stats
+  # The command goes in, then stdin stays open so the run goes on until the
+  # robot has moved 5 cm (a loaded machine may take seconds), within the
+  # wait's deadline; closing stdin ends the run, and the driver stops the robot.
+  readings="$BATS_TEST_TMPDIR/readings.json"
+  mkfifo "$BATS_TEST_TMPDIR/commands"
+  "$player_drivers" run er1_position "port=$robot" motor_dir=-1 --stdin --format json \
+    <"$BATS_TEST_TMPDIR/commands" >"$readings" 2>"$BATS_TEST_TMPDIR/run.err" &
+  run_pid=$!
+  exec 4>"$BATS_TEST_TMPDIR/commands"
+  printf '%s\n' '{"device":"position:0","data":{"xspeed":100}}' >&4
+  moved() { [ "$(jq -s '[.[] | select(.data.xpos >= 50)] | length' "$readings" 2>/dev/null)" -gt 0 ]; }
+  wait_until --pid "$run_pid" --log "$BATS_TEST_TMPDIR/run.err" "a reading 5 cm ahead" moved
+  exec 4>&-
+  wait_for_exit "$run_pid"
+  [ "$exit_status" -eq 0 ]
+  # The robot itself went forward: x of at least 0.05 m in a stats line.
+  wait_for_line --pid "$emulator_pid" "$BATS_TEST_TMPDIR/emulate.err" \
+    'left motor on port 1, at \(([1-9][0-9]*\.[0-9]{2}|0\.(0[5-9]|[1-9][0-9])), '
   stop_cleanly "$emulator_pid"
 }
 
