@@ -9,6 +9,7 @@
 #include "eval_command.hpp"
 #include "plan_command.hpp"
 #include "stop_signals.hpp"
+#include "sweep_command.hpp"
 
 namespace {
 
@@ -28,6 +29,7 @@ Examples:
   amcl-offline localize sim.log --map cave.pnm --scale 0.03 --negate --origin 0,0 --init-pose truth
   amcl-offline eval est.csv --truth intel.log.gz
   amcl-offline eval runs/ --truth intel.log.gz --format markdown    a table: a row per runs/*.csv
+  amcl-offline sweep run sweep.json -o sweep/ -j 2 --format markdown   logs x parameters x seeds
 
 localize writes one row per scan: time,x,y,yaw,std_x,std_y,std_yaw,particles
 (metres, radians; --format log: Player log localize:0 lines instead), and a one-line summary on stderr: scans, wall time,
@@ -149,6 +151,30 @@ int main(int argc, char** argv) {
   plan_app->add_option("--plot", plan.plot, "PNG of the map, the path(s), start and goal");
   plan_app->footer(offline::kPlanHelpFooter);
 
+  auto* sweep_app = app.add_subcommand("sweep", "many logs x parameter values x seeds: plan, run here or on a cluster, collect");
+  sweep_app->require_subcommand(1);
+  sweep_app->footer(offline::kSweepHelpFooter);
+  offline::SweepPlanCommand sweep_plan;
+  auto* sweep_plan_app = sweep_app->add_subcommand("plan", "write the jobs (jobs.txt for GNU parallel, sweep.sbatch for Slurm) into DIR");
+  sweep_plan_app->add_option("SPEC", sweep_plan.spec, "the sweep's JSON spec")->required();
+  sweep_plan_app->add_option("-o,--output", sweep_plan.dir, "the sweep's directory DIR")->required();
+  sweep_plan_app->add_option("--amcl-offline", sweep_plan.program,
+                             "the amcl-offline the jobs run, as the machines running them see it (default: this one)");
+  offline::SweepRunCommand sweep_run;
+  auto* sweep_run_app = sweep_app->add_subcommand("run", "plan, run the jobs here N at a time, then collect");
+  sweep_run_app->add_option("SPEC", sweep_run.spec, "the sweep's JSON spec")->required();
+  sweep_run_app->add_option("-o,--output", sweep_run.dir, "the sweep's directory DIR")->required();
+  sweep_run_app->add_option("-j,--jobs", sweep_run.jobs, "runs at a time")->capture_default_str();
+  sweep_run_app->add_option("--format", sweep_run.format, "the table: csv, markdown or json")->capture_default_str();
+  sweep_run_app->add_option("--table", sweep_run.output, "where the table goes (- for stdout)")->capture_default_str();
+  sweep_run_app->add_option("--plot", sweep_run.plot, "PNG: position RMSE per parameter value");
+  offline::SweepCollectCommand sweep_collect;
+  auto* sweep_collect_app = sweep_app->add_subcommand("collect", "every run's result in DIR as one table, wherever the jobs ran");
+  sweep_collect_app->add_option("DIR", sweep_collect.dir, "the sweep's directory")->required();
+  sweep_collect_app->add_option("--format", sweep_collect.format, "csv, markdown or json")->capture_default_str();
+  sweep_collect_app->add_option("-o,--output", sweep_collect.output, "where the table goes (- for stdout)")->capture_default_str();
+  sweep_collect_app->add_option("--plot", sweep_collect.plot, "PNG: position RMSE per parameter value");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -160,6 +186,15 @@ int main(int argc, char** argv) {
   if (localize_app->parsed()) {
     localize.progress = isatty(STDERR_FILENO) == 1;
     return guarded([&] { return offline::run_localize(offline::make_localize_options(localize), std::cout, std::cerr); });
+  }
+  if (sweep_plan_app->parsed()) {
+    return guarded([&] { return offline::run_sweep_plan(offline::make_sweep_plan_options(sweep_plan, offline::this_program(argv[0])), std::cerr); });
+  }
+  if (sweep_run_app->parsed()) {
+    return guarded([&] { return offline::run_sweep_run(offline::make_sweep_run_options(sweep_run, offline::this_program(argv[0])), std::cout, std::cerr); });
+  }
+  if (sweep_collect_app->parsed()) {
+    return guarded([&] { return offline::run_sweep_collect(offline::make_sweep_collect_options(sweep_collect), std::cout, std::cerr); });
   }
   if (plan_app->parsed()) return guarded([&] { return offline::run_plan(offline::make_plan_options(plan), std::cout, std::cerr); });
   return guarded([&] { return offline::run_eval(offline::make_eval_options(eval), std::cout, std::cerr); });
