@@ -131,6 +131,7 @@ bool AmclFilter::update(const geometry::Pose2& odometry, const LaserScan* scan) 
                parameters_.update_min_angle;
   };
   if (scan != nullptr && (laser_update_pending_ || moved_since(laser_odometry_))) {
+    unmoved_updates_ = moved_since(laser_odometry_) ? 0 : unmoved_updates_ + 1;
     move_particles(odometry);
     laser_update(*scan);
     laser_odometry_ = odometry;
@@ -198,6 +199,16 @@ void AmclFilter::laser_update(const LaserScan& scan) {
   if (due) resample();
   refresh_hypotheses();
   end_search_once_found();
+  laser_update_pending_ = belief_uncertain() && unmoved_updates_ < parameters_.uncertain_updates_most;
+}
+
+bool AmclFilter::belief_uncertain() const {
+  if (searching_ || clusters_.empty()) return false;
+  const Eigen::Matrix3d& spread = clusters_.front().covariance;
+  const double heading = std::sqrt(std::max(0.0, spread(2, 2)));
+  const double position = std::sqrt(std::max(0.0, spread(0, 0) + spread(1, 1)));
+  return (parameters_.uncertain_heading_deviation > 0.0 && heading > parameters_.uncertain_heading_deviation) ||
+         (parameters_.uncertain_position_deviation > 0.0 && position > parameters_.uncertain_position_deviation);
 }
 
 void AmclFilter::leave_out_short_readings(const LaserScan& scan) {

@@ -62,7 +62,8 @@ class AmclFilter {
   // update and (every resample_interval updates, or on an effective sample
   // size drop) resampling once the robot has moved more than
   // update_min_distance or turned more than update_min_angle since the last
-  // laser update. Without a scan, motion past those thresholds is still
+  // laser update, or while the belief is too uncertain to wait for that
+  // (AmclParameters' uncertain_* settings). Without a scan, motion past those thresholds is still
   // applied, so odometry does not pile up. Returns true when a laser update
   // ran.
   bool update(const geometry::Pose2& odometry, const LaserScan* scan);
@@ -91,6 +92,9 @@ class AmclFilter {
   void refresh_hypotheses();
   void end_search_once_found();
   void apply_recovery_rates();
+  // The heaviest cluster is wider than the uncertain_* deviations: the next
+  // scan updates without waiting for motion.
+  bool belief_uncertain() const;
   LikelihoodFieldModel& likelihood_field();
   BeamModel& beam_model();
   void restart();
@@ -118,6 +122,7 @@ class AmclFilter {
   geometry::Pose2 laser_odometry_;     // odometry at the last laser update
   geometry::Pose2 cluster_odometry_;   // odometry the clusters were taken at
   std::size_t update_count_ = 0;
+  std::size_t unmoved_updates_ = 0;  // laser updates in a row short of the motion thresholds
   bool searching_ = false;
   std::size_t search_particles_ = 0;  // KLD's ceiling while searching
   std::size_t found_updates_ = 0;     // laser updates in a row the search's end held

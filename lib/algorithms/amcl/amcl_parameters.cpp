@@ -58,6 +58,8 @@ void validate(const AmclParameters& p) {
           "beam_scan_likelihood_exponent must lie in (0, 1]");
   require(is_non_negative(p.update_min_distance) && is_non_negative(p.update_min_angle),
           "update thresholds must be non-negative");
+  require(is_non_negative(p.uncertain_heading_deviation) && is_non_negative(p.uncertain_position_deviation),
+          "uncertain_heading_deviation and uncertain_position_deviation must be at least 0 (0: off)");
   require(p.resample_interval >= 1, "resample_interval must be at least 1");
   require(is_positive(p.cluster_cell_size) && is_positive(p.cluster_angle_size),
           "cluster bin sizes must be positive");

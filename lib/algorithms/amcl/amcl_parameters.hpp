@@ -133,6 +133,23 @@ struct AmclParameters {
   // --- when to update (1.5: update_thresh [0.2 m, 30 deg]; not in the manual's table) ---
   double update_min_distance = 0.2;  // m; ROS: update_min_d
   double update_min_angle = std::numbers::pi / 6.0;  // rad; ROS: update_min_a
+  // While the heaviest cluster is wider than this (heading standard
+  // deviation, rad; or position, m), every scan updates, moved or not. A
+  // fast turn spreads the particles over tens of degrees and one damped
+  // scan cannot pull them in; waiting for the next 0.2 m or 30 degrees left
+  // the estimate that far off for seconds while the robot crept or stood
+  // (a 64 degree turn in a corridor stayed 80 degrees off for 9 s). Each
+  // scan is a new reading, so counting it is not counting one twice; a
+  // settled belief goes back to the motion thresholds. 0 turns it off
+  // (1.5 and ROS update on motion only). Not used while a global start
+  // searches: that search is paced by motion (search_end_updates). At most
+  // uncertain_updates_most such scans in a row, then motion is needed
+  // again: a robot standing still resamples without the motion model's
+  // spread, and a cloud resampled on and on without it thins out to a few
+  // copies of itself.
+  double uncertain_heading_deviation = 8.0 * std::numbers::pi / 180;
+  double uncertain_position_deviation = 0.3;
+  std::size_t uncertain_updates_most = 5;
 
   // --- resampling ---
   std::size_t resample_interval = 2;  // resample every N laser updates; ROS: resample_interval

@@ -1,7 +1,7 @@
 #pragma once
 // Test fixtures shared by the amcl tests: a 10 m x 6 m walled room with two
-// obstacles placed so that no rotation maps the room onto itself, and a
-// simulated laser that ray casts it.
+// obstacles placed so that no rotation maps the room onto itself, office
+// corridors, and a simulated laser that ray casts them.
 
 #include "algorithms/amcl/laser_scan.hpp"
 #include "algorithms/geometry/pose2.hpp"
@@ -38,6 +38,23 @@ inline std::shared_ptr<grid::OccupancyGrid> make_room() {
   fill_box(*map, 0.1, 0.1, 9.9, 5.9, grid::CellState::free);
   fill_box(*map, 6.0, 1.5, 7.0, 2.5, grid::CellState::occupied);
   fill_box(*map, 1.8, 3.7, 2.2, 4.9, grid::CellState::occupied);
+  return map;
+}
+
+// Office corridors as a map made from scans has them: free space, walls
+// 0.1 m thick, unknown beyond. A 1.2 m corridor along x (interior y 2.4 to
+// 3.6, x 0.5 to 16), a side corridor up from x 7.4-8.6 to y 12.5, and two
+// door niches (x 3.0-3.8 above it, x 12.0-12.8 below) so that it is not
+// the same everywhere along x.
+inline std::shared_ptr<grid::OccupancyGrid> make_corridors() {
+  auto map = std::make_shared<grid::OccupancyGrid>(340, 260, room_resolution, Eigen::Vector2d(0.0, 0.0),
+                                                   grid::CellState::unknown);
+  constexpr double wall = 0.1;
+  const double spaces[][4] = {{0.5, 2.4, 16.0, 3.6}, {7.4, 3.6, 8.6, 12.5}, {3.0, 3.6, 3.8, 4.4}, {12.0, 1.6, 12.8, 2.4}};
+  for (const auto& box : spaces) {
+    fill_box(*map, box[0] - wall, box[1] - wall, box[2] + wall, box[3] + wall, grid::CellState::occupied);
+  }
+  for (const auto& box : spaces) fill_box(*map, box[0], box[1], box[2], box[3], grid::CellState::free);
   return map;
 }
 
