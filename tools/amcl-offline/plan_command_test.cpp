@@ -113,10 +113,14 @@ TEST(PlanCommand, WritesTheWaypointsAsCsvFromStartToGoal) {
 }
 
 TEST(PlanCommand, TheStartOfATrackIsItsLastEstimateAtOrBeforeTheTime) {
-  localization::Trajectory track;
-  track.push_back({10.0, {1.0, 2.0, 0.0}});
-  track.push_back({11.0, {3.0, 4.0, 0.0}});
-  track.push_back({12.0, {5.0, 6.0, 0.0}});
+  // Members set by name: TimedPose may gain fields (the estimate's spread).
+  const auto at = [](double time, double x, double y) {
+    localization::TimedPose pose;
+    pose.time = time;
+    pose.pose = {x, y, 0.0};
+    return pose;
+  };
+  const localization::Trajectory track{at(10.0, 1.0, 2.0), at(11.0, 3.0, 4.0), at(12.0, 5.0, 6.0)};
   EXPECT_EQ(position_at(track, 11.0, "t.csv"), Eigen::Vector2d(3.0, 4.0));
   EXPECT_EQ(position_at(track, 11.9, "t.csv"), Eigen::Vector2d(3.0, 4.0));
   EXPECT_EQ(position_at(track, 99.0, "t.csv"), Eigen::Vector2d(5.0, 6.0));
