@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <stdexcept>
 #include <utility>
 
@@ -20,6 +21,22 @@ namespace {
 constexpr Duration kMotionStep = 10ms;
 // Zoom drive speeds run 1..8 (p + 1 of `2p`/`3p`).
 constexpr double kZoomDriveSteps = 8;
+
+// Inquiries the camera answers beyond pan/tilt and zoom. Player 2.x and 3.x's sonyevid30 asks for these two at
+// start-up (the sheet's 1.5 driver never does): CAM_PowerInq `8x 09 04 00 FF` -> `y0 50 02 FF` (on; 03 is
+// standby), and the device-type inquiry `8x 09 00 02 FF` -> `y0 50 00 20 04 02 rr rr 02 FF` (vendor 0020 Sony,
+// model 0402 the EVI-D30/D31, a ROM version, 2 sockets). Any other inquiry is not modelled but still answered
+// (`90 50 00 FF`): a host waiting for an answer must get one (sheet §6.6).
+visca::Bytes other_inquiry_reply(std::span<const std::uint8_t> packet) {
+  const auto is = [&](std::initializer_list<std::uint8_t> body) {
+    return packet.size() == body.size() + 2 && std::equal(body.begin(), body.end(), packet.begin() + 1);
+  };
+  if (is({0x09, 0x04, 0x00})) return visca::answer_reply(std::array<std::uint8_t, 1>{0x02});
+  if (is({0x09, 0x00, 0x02})) {
+    return visca::answer_reply(std::array<std::uint8_t, 7>{0x00, 0x20, 0x04, 0x02, 0x01, 0x18, 0x02});
+  }
+  return visca::answer_reply(std::array<std::uint8_t, 1>{0x00});
+}
 
 }  // namespace
 
@@ -61,8 +78,7 @@ void Evid30Emulator::execute(std::span<const std::uint8_t> packet) {
       send(visca::zoom_reply(static_cast<int>(std::lround(axes_[kZoom].position))));
       return;
     case HostMessage::Kind::other_inquiry:
-      // Not modelled, but answered: a host waiting for an answer must get one (§6.6).
-      send(visca::answer_reply(std::array<std::uint8_t, 1>{0x00}));
+      send(other_inquiry_reply(packet));
       return;
     case HostMessage::Kind::address_set:
       send({visca::kBroadcast, 0x30, 0x02, visca::kTerminator});  // the next camera would be 2

@@ -4,7 +4,8 @@
 // driver works against it unmodified:
 //
 //  * packets `81 ... FF` (and the broadcasts `88 30 01 FF`, `88 01 00 01 FF`);
-//  * inquiries answered at once (`90 50 ... FF`, unknown ones too);
+//  * inquiries answered at once (`90 50 ... FF`, unknown ones too; power on
+//    and the EVI-D30's device type as the camera answers them);
 //  * a command takes a free socket: `90 4y FF` at once, `90 5y FF` when its
 //    motion ends (a drive, or a command the camera does not model, ends at
 //    once); a new pan/tilt or zoom command ends the one of the same kind

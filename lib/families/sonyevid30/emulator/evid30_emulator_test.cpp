@@ -47,12 +47,28 @@ TEST(Evid30Emulator, AnswersInquiriesAtOnceWithNibbles) {
   EXPECT_EQ(host.send(visca::pan_tilt_inquiry()), "90 50 00 00 00 00 00 00 00 00 FF");
   EXPECT_EQ(host.send(visca::zoom_inquiry()), "90 50 00 00 00 00 FF");
   // An inquiry it does not model still gets an answer (a 1.5 driver would wait forever).
-  EXPECT_EQ(host.send({0x81, 0x09, 0x04, 0x00, 0xFF}), "90 50 00 FF");
+  EXPECT_EQ(host.send({0x81, 0x09, 0x04, 0x4B, 0xFF}), "90 50 00 FF");
   // Broadcasts are tolerated; nothing is sent unasked.
   EXPECT_EQ(host.send({0x88, 0x30, 0x01, 0xFF}), "88 30 02 FF");
   EXPECT_EQ(host.send({0x88, 0x01, 0x00, 0x01, 0xFF}), "88 01 00 01 FF");
   host.wait(5s);
   EXPECT_EQ(host.replies(), "");
+}
+
+// Found by running Player 2.1.3's sonyevid30 against the emulator (docs/reference-checks/2026-12-08-serial-sensors.md):
+// it asks for the camera type and the power state at start-up, as a real EVI-D30 answers them. An answer of
+// `90 50 00 FF` to either made it report "Unknown camera type: 0" and "Failed to communicate with camera".
+TEST(Evid30Emulator, AnswersPowerAndDeviceTypeInquiriesAsAnEviD30) {
+  Host host;
+  EXPECT_EQ(host.send({0x81, 0x09, 0x04, 0x00, 0xFF}), "90 50 02 FF");  // CAM_PowerInq: on
+  // Device type: vendor 0020 (Sony), model 0402 (EVI-D30/D31), ROM version, 2 sockets; within the 11 bytes a
+  // 1.5 driver reads.
+  const std::string type = host.send({0x81, 0x09, 0x00, 0x02, 0xFF});
+  EXPECT_EQ(type.substr(0, 18), "90 50 00 20 04 02 ");
+  EXPECT_EQ(type.substr(type.size() - 5), "02 FF");
+  EXPECT_EQ(type.size(), std::string("90 50 00 20 04 02 01 18 02 FF").size());
+  // Longer or other inquiries of the same family are not these two.
+  EXPECT_EQ(host.send({0x81, 0x09, 0x00, 0x02, 0x00, 0xFF}), "90 50 00 FF");
 }
 
 TEST(Evid30Emulator, MovesToAnAbsoluteTargetAndCompletesItsSocketThere) {
