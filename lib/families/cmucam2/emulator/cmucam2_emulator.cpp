@@ -83,6 +83,10 @@ void Cmucam2Emulator::execute(const std::string& line) {
     for (Servo& servo : servos_) servo.target = kServoCentre;
     return ack(std::string(kVersion) + "\r");
   }
+  // Servo mask (CMUcam2 manual: bits 0/1 pan/tilt auto-servo, 2/3 pan/tilt report, 0..15): Player 2.x's cmucam2
+  // sends `SM 0` at start-up and `SM 15` to auto-servo. Accepted as the camera does; auto-servoing (the camera
+  // turning toward the tracked blob) is not emulated, the servos stay where SV puts them.
+  if (name == "SM" && args.size() == 1 && args[0] >= 0 && args[0] <= 15) return ack();
   // Power and camera registers: accepted, nothing to emulate (1.5's camera.c has them).
   if ((name == "CP" && args.size() == 1) || (name == "CR" && !args.empty() && args.size() % 2 == 0)) return ack();
   nck();

@@ -137,6 +137,18 @@ TEST(Cmucam2Emulator, ServosSlewToTheirPositionsAndTurnTheView) {
   EXPECT_EQ(camera.emulator.servo_target(0), 128);
 }
 
+// Found by running Player 2.1.3's cmucam2 against the emulator (docs/reference-checks/2026-12-08-serial-sensors.md):
+// its Setup sends `SM 0` (servo mask: auto-servoing off), which a CMUcam2 acknowledges; an NCK made it print
+// "Disabling auto-servo failed". The mask is accepted (0..15); the servos stay where SV puts them.
+TEST(Cmucam2Emulator, AcceptsTheServoMask) {
+  Camera camera;
+  EXPECT_EQ(camera.say("SM 0"), "ACK\r:");
+  EXPECT_EQ(camera.say("SM 15"), "ACK\r:");
+  EXPECT_EQ(camera.say("SM 16"), "NCK\r:");
+  EXPECT_EQ(camera.say("SM"), "NCK\r:");
+  EXPECT_EQ(camera.say("GS 0"), "ACK\r128\r:");
+}
+
 TEST(Cmucam2Emulator, TracksColourInAnImage) {
   ScratchDirectory dir("cmucam2-image");
   const auto file = dir.path() / "scene.ppm";
