@@ -20,10 +20,10 @@ void write_row(std::ostream& out, const LocalizedScan& row, bool json) {
   const auto sd = [&](int i) { return std::sqrt(std::max(0.0, covariance(i, i))); };
   char line[256];
   const char* pattern = json ? "{\"time\":%.6f,\"x\":%.4f,\"y\":%.4f,\"yaw\":%.5f,\"std_x\":%.4f,"
-                               "\"std_y\":%.4f,\"std_yaw\":%.5f,\"particles\":%zu}\n"
-                             : "%.6f,%.4f,%.4f,%.5f,%.4f,%.4f,%.5f,%zu\n";
+                               "\"std_y\":%.4f,\"std_yaw\":%.5f,\"particles\":%zu,\"cov_xy\":%.8f}\n"
+                             : "%.6f,%.4f,%.4f,%.5f,%.4f,%.4f,%.5f,%zu,%.8f\n";
   std::snprintf(line, sizeof line, pattern, row.time, mean.x, mean.y, mean.yaw, sd(0), sd(1), sd(2),
-                row.particles);
+                row.particles, covariance(0, 1));
   out << line;
 }
 
@@ -33,7 +33,7 @@ constexpr const char* kLogHost = "amcl-offline";
 }  // namespace
 
 EstimateWriter::EstimateWriter(std::ostream& out, EstimateFormat format) : out_(out), format_(format) {
-  if (format_ == EstimateFormat::csv) out_ << "time,x,y,yaw,std_x,std_y,std_yaw,particles\n";
+  if (format_ == EstimateFormat::csv) out_ << "time,x,y,yaw,std_x,std_y,std_yaw,particles,cov_xy\n";
   if (format_ == EstimateFormat::player_log) out_ << log::log_file_header();
 }
 

@@ -161,11 +161,12 @@ TEST(EstimateWriter, CsvHasTheDocumentedHeaderAndUnits) {
   row.time = 12.5;
   row.estimate.mean = {1.25, -2.5, 0.5};
   row.estimate.covariance = Eigen::Vector3d(0.04, 0.09, 0.01).asDiagonal();
+  row.estimate.covariance(0, 1) = row.estimate.covariance(1, 0) = -0.0123;
   row.particles = 321;
   writer.write(row);
   EXPECT_EQ(out.str(),
-            "time,x,y,yaw,std_x,std_y,std_yaw,particles\n"
-            "12.500000,1.2500,-2.5000,0.50000,0.2000,0.3000,0.10000,321\n");
+            "time,x,y,yaw,std_x,std_y,std_yaw,particles,cov_xy\n"
+            "12.500000,1.2500,-2.5000,0.50000,0.2000,0.3000,0.10000,321,-0.01230000\n");
 }
 
 TEST(EstimateWriter, JsonLinesCarryTheSameKeys) {
@@ -177,7 +178,7 @@ TEST(EstimateWriter, JsonLinesCarryTheSameKeys) {
   writer.write(row);
   EXPECT_EQ(out.str(),
             "{\"time\":1.000000,\"x\":0.0000,\"y\":0.0000,\"yaw\":0.00000,\"std_x\":0.0000,"
-            "\"std_y\":0.0000,\"std_yaw\":0.00000,\"particles\":7}\n");
+            "\"std_y\":0.0000,\"std_yaw\":0.00000,\"particles\":7,\"cov_xy\":0.00000000}\n");
 }
 
 }  // namespace offline_localizer_test

@@ -46,6 +46,13 @@ std::optional<double> finite_number(std::string_view text) {
 }
 
 constexpr std::array<std::string_view, 4> kColumns{"time", "x", "y", "yaw"};
+constexpr std::array<std::string_view, 4> kSpreadColumns{"std_x", "std_y", "std_yaw", "cov_xy"};
+
+std::optional<std::size_t> column_named(const std::vector<std::string_view>& header, std::string_view name) {
+  const auto at = std::find(header.begin(), header.end(), name);
+  if (at == header.end()) return std::nullopt;
+  return static_cast<std::size_t>(at - header.begin());
+}
 
 }  // namespace
 
@@ -55,6 +62,8 @@ Trajectory read_trajectory_csv(std::istream& in, std::string_view name) {
   };
   Trajectory trajectory;
   std::optional<std::array<std::size_t, 4>> column_of;  // time, x, y, yaw
+  std::array<std::optional<std::size_t>, 4> spread_column_of;  // std_x, std_y, std_yaw, cov_xy
+  bool has_spread = false;
   std::size_t needed_fields = 0;
   std::string line;
   int number = 0;
@@ -76,6 +85,13 @@ Trajectory read_trajectory_csv(std::istream& in, std::string_view name) {
         needed_fields = std::max(needed_fields, at + 1);
       }
       column_of = found;
+      for (std::size_t c = 0; c < kSpreadColumns.size(); ++c) spread_column_of[c] = column_named(fields, kSpreadColumns[c]);
+      has_spread = spread_column_of[0] && spread_column_of[1] && spread_column_of[2];
+      if (has_spread) {
+        for (const auto& at : spread_column_of) {
+          if (at) needed_fields = std::max(needed_fields, *at + 1);
+        }
+      }
       continue;
     }
     if (fields.size() < needed_fields) {
@@ -90,7 +106,21 @@ Trajectory read_trajectory_csv(std::istream& in, std::string_view name) {
       }
       values[c] = *value;
     }
-    trajectory.push_back({values[0], {values[1], values[2], values[3]}});
+    TimedPose pose{values[0], {values[1], values[2], values[3]}};
+    if (has_spread) {
+      std::array<double, 4> spread{};
+      for (std::size_t c = 0; c < kSpreadColumns.size(); ++c) {
+        if (!spread_column_of[c]) continue;
+        const auto value = finite_number(fields[*spread_column_of[c]]);
+        if (!value) {
+          throw fail(number, std::string("column '") + std::string(kSpreadColumns[c]) + "': '" +
+                                 std::string(fields[*spread_column_of[c]]) + "' is not a number");
+        }
+        spread[c] = *value;
+      }
+      pose.spread = PoseSpread{spread[0] * spread[0], spread[1] * spread[1], spread[3], spread[2] * spread[2]};
+    }
+    trajectory.push_back(pose);
   }
   if (!column_of) throw std::runtime_error(std::string(name) + ": no header line (time,x,y,yaw)");
   return trajectory;

@@ -6,10 +6,13 @@
 //
 // CSV: a header line naming at least the columns time, x, y, yaw (any order;
 // other columns are ignored), then one row per pose: s, m, m, rad. Blank lines
-// and lines starting with '#' are skipped.
+// and lines starting with '#' are skipped. With std_x, std_y and std_yaw
+// columns too (localize's), each pose carries its spread, cov_xy 0 when
+// there is no such column (older estimates).
 
 #include <filesystem>
 #include <istream>
+#include <optional>
 #include <ostream>
 #include <string_view>
 #include <vector>
@@ -19,9 +22,20 @@
 
 namespace playerkit::localization {
 
+// The uncertainty an estimate claims (m^2, m^2, m^2, rad^2).
+struct PoseSpread {
+  double var_x = 0, var_y = 0, cov_xy = 0, var_yaw = 0;
+};
+
 struct TimedPose {
+  TimedPose() = default;
+  // A constructor rather than an aggregate, so {time, pose} needs no spread.
+  TimedPose(double time_s, const geometry::Pose2& at, std::optional<PoseSpread> claimed = std::nullopt)
+      : time(time_s), pose(at), spread(claimed) {}
+
   double time = 0;  // s
   geometry::Pose2 pose;
+  std::optional<PoseSpread> spread;  // an estimate's, when its CSV has std_x, std_y, std_yaw
 };
 
 using Trajectory = std::vector<TimedPose>;

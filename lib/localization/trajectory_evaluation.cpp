@@ -72,12 +72,48 @@ std::optional<std::size_t> convergence_row(const std::vector<MatchedRow>& rows, 
   return std::nullopt;
 }
 
+// How many claimed standard deviations an error is: the position's
+// Mahalanobis distance, and the heading's ratio. A spread of zero makes any
+// error infinitely many (a filter that claims certainty and is off).
+struct ErrorInSigmas {
+  double position = 0;
+  double heading = 0;
+};
+
+ErrorInSigmas error_in_sigmas(const geometry::Pose2& estimate, const geometry::Pose2& truth, const PoseSpread& spread) {
+  const double dx = estimate.x - truth.x, dy = estimate.y - truth.y;
+  const double determinant = spread.var_x * spread.var_y - spread.cov_xy * spread.cov_xy;
+  ErrorInSigmas result;
+  if (determinant > 0.0 && spread.var_x > 0.0) {
+    const double squared = (spread.var_y * dx * dx - 2.0 * spread.cov_xy * dx * dy + spread.var_x * dy * dy) / determinant;
+    result.position = std::sqrt(std::max(0.0, squared));
+  } else {
+    result.position = dx == 0.0 && dy == 0.0 ? 0.0 : HUGE_VAL;
+  }
+  const double heading_error = std::abs(geometry::angle_difference(estimate.yaw, truth.yaw));
+  result.heading = spread.var_yaw > 0.0 ? heading_error / std::sqrt(spread.var_yaw) : (heading_error == 0.0 ? 0.0 : HUGE_VAL);
+  return result;
+}
+
 nlohmann::json statistics_json(const ErrorStatistics& s) {
   return {{"count", s.count},
           {"position_rmse_m", s.position_rmse_m},
           {"position_max_m", s.position_max_m},
           {"heading_rmse_rad", s.heading_rmse_rad},
           {"heading_max_rad", s.heading_max_rad}};
+}
+
+// null when the estimate claimed no spread; infinite sigmas (a zero spread
+// and an error) as null too, JSON having no infinity.
+nlohmann::json coverage_json(const CoverageStatistics& c) {
+  if (c.rows == 0) return nullptr;
+  const auto finite_or_null = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  return {{"rows", c.rows},
+          {"inside_2sigma", c.inside_2sigma},
+          {"share", c.share()},
+          {"confidently_wrong", c.confidently_wrong},
+          {"worst_position_sigmas", finite_or_null(c.worst_position_sigmas)},
+          {"worst_heading_sigmas", finite_or_null(c.worst_heading_sigmas)}};
 }
 
 nlohmann::json optional_json(const std::optional<double>& value) {
@@ -110,6 +146,19 @@ TrajectoryEvaluation evaluate_trajectory(const Trajectory& estimate, const Traje
     row.within = row.position_error <= options.converged_position_m &&
                  row.heading_error <= options.converged_heading_rad;
     rows.push_back(row);
+    if (entry.spread) {
+      const ErrorInSigmas sigmas = error_in_sigmas(entry.pose, *true_pose, *entry.spread);
+      CoverageStatistics& coverage = result.coverage;
+      ++coverage.rows;
+      const bool inside = sigmas.position <= 2.0 && sigmas.heading <= 2.0;
+      if (inside) ++coverage.inside_2sigma;
+      if (!inside && (row.position_error > options.confident_position_m ||
+                      row.heading_error > options.confident_heading_rad)) {
+        ++coverage.confidently_wrong;
+      }
+      coverage.worst_position_sigmas = std::max(coverage.worst_position_sigmas, sigmas.position);
+      coverage.worst_heading_sigmas = std::max(coverage.worst_heading_sigmas, sigmas.heading);
+    }
   }
   result.matched = rows.size();
   result.all = statistics(rows, 0);
@@ -150,12 +199,15 @@ std::string TrajectoryEvaluation::to_json(int indent) const {
       {"lost_episodes", lost_episodes},
       {"rows_outside_after_convergence", rows_outside_after_convergence},
       {"longest_lost_s", longest_lost_s},
+      {"coverage", coverage_json(coverage)},
       {"options",
        {{"time_tolerance_s", options.time_tolerance_s},
         {"max_time_gap_s", options.max_time_gap_s},
         {"converged_position_m", options.converged_position_m},
         {"converged_heading_rad", options.converged_heading_rad},
-        {"convergence_hold_s", options.convergence_hold_s}}}};
+        {"convergence_hold_s", options.convergence_hold_s},
+        {"confident_position_m", options.confident_position_m},
+        {"confident_heading_rad", options.confident_heading_rad}}}};
   return json.dump(indent);
 }
 

@@ -14,6 +14,12 @@
 // converged_position_m and heading error <= converged_heading_rad hold for at
 // least convergence_hold_s (or to the end of the estimate). "Lost" after it
 // counts the times the error leaves those bounds again.
+// Coverage: when the estimate claims a spread (localize's std_x, std_y,
+// std_yaw, cov_xy), how often the truth lies inside the claimed 2-sigma
+// ellipse (Mahalanobis distance of the position error at most 2) and the
+// 2-sigma heading interval, and how often the estimate was far off (past
+// confident_position_m or confident_heading_rad) outside them: confidently
+// wrong.
 
 #include <cstddef>
 #include <numbers>
@@ -30,6 +36,17 @@ struct EvaluationOptions {
   double converged_position_m = 0.3;
   double converged_heading_rad = 10.0 * std::numbers::pi / 180.0;
   double convergence_hold_s = 5.0;
+  double confident_position_m = 0.5;
+  double confident_heading_rad = 20.0 * std::numbers::pi / 180.0;
+};
+
+struct CoverageStatistics {
+  std::size_t rows = 0;            // matched rows with a claimed spread
+  std::size_t inside_2sigma = 0;   // truth inside both the ellipse and the heading interval
+  std::size_t confidently_wrong = 0;  // outside them and far off
+  double worst_position_sigmas = 0;  // largest Mahalanobis distance of the position error
+  double worst_heading_sigmas = 0;   // largest heading error in claimed standard deviations
+  double share() const { return rows > 0 ? static_cast<double>(inside_2sigma) / static_cast<double>(rows) : 0.0; }
 };
 
 struct ErrorStatistics {
@@ -55,6 +72,8 @@ struct TrajectoryEvaluation {
   // Set by the caller when the estimate was paired by scan order
   // (scan_order_matching.hpp): its times are the truth's file-order clock.
   bool matched_by_scan_order = false;
+  // Empty (rows 0) when the estimate claims no spread.
+  CoverageStatistics coverage;
   EvaluationOptions options;
 
   bool converged() const { return convergence_time_s.has_value(); }

@@ -161,6 +161,54 @@ TEST(TrajectoryCsv, WrittenTrajectoriesReadBack) {
   EXPECT_EQ(back[1].time, 2.0);
 }
 
+// Each row's error against the spread it claims; the truth stands still at
+// the origin, heading 0.
+TEST(TrajectoryEvaluation, CoverageCountsTheTruthInsideTheClaimed2SigmaAndTheConfidentlyWrong) {
+  Trajectory truth;
+  for (int t = 0; t <= 7; ++t) truth.push_back({double(t), {0, 0, 0}});
+  const PoseSpread tight{0.01, 0.01, 0.0, 0.01};  // 0.1 m, 0.1 rad
+  const PoseSpread along_the_diagonal{0.5, 0.5, 0.49, 0.01};  // 0.995 m along (1,1), 0.1 m across
+  const Trajectory estimate{
+      {0, {0.1, 0, 0}, tight},                           // 1 sigma: inside
+      {1, {0.3, 0, 0}, tight},                           // 3 sigma, 0.3 m: outside, not far
+      {2, {0.6, 0, 0}, tight},                           // 6 sigma, 0.6 m: confidently wrong
+      {3, {0.6, 0, 0}, PoseSpread{0.25, 0.25, 0, 0.01}},  // 1.2 sigma: inside
+      {4, {0.5, 0.5, 0}, along_the_diagonal},            // 0.71 m along the long axis: inside
+      {5, {0.2, -0.2, 0}, along_the_diagonal},           // 0.28 m across: 2.8 sigma, outside
+      {6, {0, 0, 30 * kDegree}, PoseSpread{0.01, 0.01, 0, std::pow(20 * kDegree, 2)}},  // 1.5 sigma: inside
+      {7, {0, 0, 30 * kDegree}, tight}};                 // 5.2 sigma and past 20 degrees: confidently wrong
+  const auto coverage = evaluate_trajectory(estimate, truth).coverage;
+  EXPECT_EQ(coverage.rows, 8u);
+  EXPECT_EQ(coverage.inside_2sigma, 4u);
+  EXPECT_EQ(coverage.confidently_wrong, 2u);
+  EXPECT_DOUBLE_EQ(coverage.share(), 0.5);
+  EXPECT_NEAR(coverage.worst_position_sigmas, 6.0, 1e-9);
+  EXPECT_NEAR(coverage.worst_heading_sigmas, (30 * kDegree) / 0.1, 1e-9);
+}
+
+TEST(TrajectoryEvaluation, NoClaimedSpreadNoCoverage) {
+  const auto truth = straight_truth(3);
+  const auto result = evaluate_trajectory(truth, truth);
+  EXPECT_EQ(result.coverage.rows, 0u);
+  EXPECT_NE(result.to_json().find("\"coverage\": null"), std::string::npos);
+}
+
+TEST(TrajectoryCsv, LocalizesStandardDeviationsAndCovarianceAreTheClaimedSpread) {
+  const auto rows = read_csv(
+      "time,x,y,yaw,std_x,std_y,std_yaw,particles,cov_xy\n"
+      "1,2,3,0.5,0.2,0.3,0.1,100,-0.01\n");
+  ASSERT_EQ(rows.size(), 1u);
+  ASSERT_TRUE(rows[0].spread);
+  EXPECT_NEAR(rows[0].spread->var_x, 0.04, 1e-12);
+  EXPECT_NEAR(rows[0].spread->var_y, 0.09, 1e-12);
+  EXPECT_NEAR(rows[0].spread->var_yaw, 0.01, 1e-12);
+  EXPECT_DOUBLE_EQ(rows[0].spread->cov_xy, -0.01);
+  // An estimate from before cov_xy: uncorrelated; one without std columns: none.
+  EXPECT_EQ(read_csv("time,x,y,yaw,std_x,std_y,std_yaw\n1,2,3,0.5,0.2,0.3,0.1\n")[0].spread->cov_xy, 0.0);
+  EXPECT_FALSE(read_csv("time,x,y,yaw\n1,2,3,0.5\n")[0].spread);
+  EXPECT_THROW(read_csv("time,x,y,yaw,std_x,std_y,std_yaw\n1,2,3,0.5,0.2,x,0.1\n"), std::runtime_error);
+}
+
 TEST(TruthFromLog, IntelTruthIsTheScanPoses) {
   const auto truth = truth_from_log(testing::radish("intel-corrected.log.gz"));
   ASSERT_EQ(truth.size(), 910u);

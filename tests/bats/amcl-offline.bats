@@ -38,7 +38,7 @@ print(v)' "$1"
   run --separate-stderr "$amcl_offline" localize odom.log --map intel.yaml --init-pose truth -o estimate.csv --plot path.png
   [ "$status" -eq 0 ]
   [[ "$stderr" == *"910 scans"*"x real time"* ]]
-  [ "$(head -n 1 estimate.csv)" = "time,x,y,yaw,std_x,std_y,std_yaw,particles" ]
+  [ "$(head -n 1 estimate.csv)" = "time,x,y,yaw,std_x,std_y,std_yaw,particles,cov_xy" ]
   [ "$(wc -l <estimate.csv)" -eq 911 ]
   [ "$(head -c 4 path.png | od -An -c | tr -d ' ')" = '211PNG' ]
 
@@ -47,7 +47,11 @@ print(v)' "$1"
   python3 -c 'import json, math, sys
 d = json.load(open("eval.json"))["all"]
 assert d["position_rmse_m"] < 0.15, d
-assert math.degrees(d["heading_rmse_rad"]) < 3.0, d'
+assert math.degrees(d["heading_rmse_rad"]) < 3.0, d
+# The spread it claims means something: the truth inside the 2-sigma ellipse
+# and heading interval at least 90 % of the scans, never far off outside it.
+c = json.load(open("eval.json"))["coverage"]
+assert c["rows"] == 910 and c["share"] >= 0.9 and c["confidently_wrong"] == 0, c'
   # The same run again gives the same rows: seeded.
   "$amcl_offline" localize odom.log --map intel.yaml --init-pose truth -o again.csv 2>/dev/null
   cmp estimate.csv again.csv
@@ -56,7 +60,7 @@ assert math.degrees(d["heading_rmse_rad"]) < 3.0, d'
   run --separate-stderr "$amcl_offline" eval runs --truth "$intel" --format markdown
   [ "$status" -eq 0 ]
   [ "${#lines[@]}" -eq 5 ]
-  [ "${lines[0]}" = "| estimate | truth | matched | rmse_m | max_m | rmse_deg | max_deg | converged_s | lost |" ]
+  [ "${lines[0]}" = "| estimate | truth | matched | rmse_m | max_m | rmse_deg | max_deg | converged_s | lost | in_2sigma |" ]
   [[ "${lines[2]}" == "| runs/again.csv | $intel | 910/910 | "* ]]
   [[ "${lines[4]}" == "| all 2 runs |  |  | "*" | 2/2 converged | "* ]]
 }
@@ -136,7 +140,7 @@ assert d["position_rmse_m"] > 5, d'
   [ "$(wc -l <rows.jsonl)" -eq 3 ]
   python3 -c 'import json
 for line in open("rows.jsonl"):
-    assert sorted(json.loads(line)) == sorted(["time","x","y","yaw","std_x","std_y","std_yaw","particles"])'
+    assert sorted(json.loads(line)) == sorted(["time","x","y","yaw","std_x","std_y","std_yaw","particles","cov_xy"])'
 }
 
 @test "--format log writes Player localize lines that player-log reads" {

@@ -12,6 +12,7 @@
 #include "localization/scan_order_matching.hpp"
 #include "localization/trajectory.hpp"
 #include "localization/trajectory_evaluation.hpp"
+#include "localization/uncertain_stretches.hpp"
 #include "log/log_clock_reader.hpp"
 #include "log/log_format_detection.hpp"
 #include "map/map_file.hpp"
@@ -63,8 +64,12 @@ int run_localize(const LocalizeOptions& options, std::ostream& out, std::ostream
   std::vector<Eigen::Vector2d> last_scan;
   std::optional<geometry::Pose2> last_pose;
   std::size_t shown = 0;
+  // Warnings come after the summary: a progress line may be showing.
+  localization::UncertaintyWatch watch;
+  std::vector<localization::UncertainStretch> unsure;
   const auto on_scan = [&](const localization::LocalizedScan& row, const localization::LoggedScan& scan) {
     writer.write(row);
+    if (auto ended = watch.observe(row.time, row.estimate.covariance)) unsure.push_back(*ended);
     if (options.plot) {
       estimated_path.push_back(row.estimate.mean.translation());
       if (scan.truth) true_path.push_back(scan.truth->translation());
@@ -118,6 +123,13 @@ int run_localize(const LocalizeOptions& options, std::ostream& out, std::ostream
   }
   if (summary.scans_without_odometry > 0) {
     err << "amcl-offline: warning: " << summary.scans_without_odometry << " scans without odometry were skipped\n";
+  }
+  if (auto last = watch.finish()) unsure.push_back(*last);
+  for (const auto& stretch : unsure) {
+    err << std::fixed << std::setprecision(1) << "amcl-offline: warning: unsure of the pose from " << stretch.start_time
+        << " s to " << stretch.end_time << " s (" << stretch.rows << (stretch.rows == 1 ? " scan" : " scans")
+        << "): 2-sigma up to " << std::setprecision(2) << stretch.worst_position_2sigma_m << " m and "
+        << std::setprecision(0) << stretch.worst_heading_2sigma_rad / geometry::kRadiansPerDegree << " deg\n";
   }
   return kExitOk;
 }

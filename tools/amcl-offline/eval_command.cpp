@@ -43,6 +43,21 @@ void write_report(const EvalRun& run, const localization::TrajectoryEvaluation& 
     out << "never converged (within " << result.options.converged_position_m << " m and "
         << degrees(result.options.converged_heading_rad) << " deg)\n";
   }
+  const localization::CoverageStatistics& coverage = result.coverage;
+  if (coverage.rows > 0) {
+    out << std::setprecision(1) << "the claimed 2-sigma held the truth in " << 100.0 * coverage.share() << "% of "
+        << coverage.rows << " rows; " << coverage.confidently_wrong << " confidently wrong (off by more than "
+        << std::setprecision(2) << result.options.confident_position_m << " m or " << std::setprecision(0)
+        << degrees(result.options.confident_heading_rad) << " deg outside it)\n";
+  }
+}
+
+// "97.3%", or "-" for an estimate that claims no spread.
+std::string coverage_cell(const localization::CoverageStatistics& coverage) {
+  if (coverage.rows == 0) return "-";
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(1) << 100.0 * coverage.share() << "%";
+  return text.str();
 }
 
 // One table row's cells, as text: the run, then its figures.
@@ -56,21 +71,22 @@ std::string fixed(double value, int digits) {
   return text.str();
 }
 
-const std::vector<std::string> kColumns{"estimate", "truth",    "matched",     "rmse_m", "max_m",
-                                        "rmse_deg", "max_deg", "converged_s", "lost"};
+const std::vector<std::string> kColumns{"estimate", "truth",       "matched", "rmse_m",    "max_m",
+                                        "rmse_deg", "max_deg",     "converged_s", "lost", "in_2sigma"};
 
 Row row_of(const EvalRun& run, const localization::TrajectoryEvaluation& result) {
   return {{run.estimate, run.truth, std::to_string(result.matched) + "/" + std::to_string(result.estimates),
            fixed(result.all.position_rmse_m, 3), fixed(result.all.position_max_m, 3),
            fixed(degrees(result.all.heading_rmse_rad), 2), fixed(degrees(result.all.heading_max_rad), 2),
            result.converged() ? fixed(*result.convergence_time_s, 1) : "never",
-           std::to_string(result.lost_episodes)}};
+           std::to_string(result.lost_episodes), coverage_cell(result.coverage)}};
 }
 
 // Over all runs: mean RMSEs, worst maxima, how many converged, losses summed.
 struct Summary {
   std::size_t runs = 0, converged = 0, lost = 0;
   double rmse_m_mean = 0, max_m = 0, rmse_deg_mean = 0, max_deg = 0;
+  localization::CoverageStatistics coverage;  // every run's rows pooled
 };
 
 Summary summarize(const std::vector<localization::TrajectoryEvaluation>& results) {
@@ -83,6 +99,9 @@ Summary summarize(const std::vector<localization::TrajectoryEvaluation>& results
     summary.max_deg = std::max(summary.max_deg, degrees(result.all.heading_max_rad));
     summary.converged += result.converged() ? 1 : 0;
     summary.lost += result.lost_episodes;
+    summary.coverage.rows += result.coverage.rows;
+    summary.coverage.inside_2sigma += result.coverage.inside_2sigma;
+    summary.coverage.confidently_wrong += result.coverage.confidently_wrong;
   }
   return summary;
 }
@@ -91,7 +110,7 @@ Row summary_row(const Summary& summary) {
   return {{"all " + std::to_string(summary.runs) + " runs", "", "", fixed(summary.rmse_m_mean, 3),
            fixed(summary.max_m, 3), fixed(summary.rmse_deg_mean, 2), fixed(summary.max_deg, 2),
            std::to_string(summary.converged) + "/" + std::to_string(summary.runs) + " converged",
-           std::to_string(summary.lost)}};
+           std::to_string(summary.lost), coverage_cell(summary.coverage)}};
 }
 
 void write_json_table(const EvalOptions& options, const std::vector<localization::TrajectoryEvaluation>& results,
@@ -109,7 +128,10 @@ void write_json_table(const EvalOptions& options, const std::vector<localization
                            {"position_max_m", summary.max_m},
                            {"heading_rmse_deg_mean", summary.rmse_deg_mean},
                            {"heading_max_deg", summary.max_deg},
-                           {"lost_episodes", summary.lost}};
+                           {"lost_episodes", summary.lost},
+                           {"inside_2sigma_share", summary.coverage.rows > 0 ? nlohmann::json(summary.coverage.share())
+                                                                             : nlohmann::json(nullptr)},
+                           {"confidently_wrong", summary.coverage.confidently_wrong}};
   out << nlohmann::json{{"runs", runs}, {"all", all}}.dump(2) << "\n";
 }
 
@@ -145,7 +167,7 @@ void write_eval_table(const EvalOptions& options, const std::vector<localization
       out << "\n";
     };
     line(kColumns);
-    out << "|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    out << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const Row& row : rows) line(row.cells);
     return;
   }

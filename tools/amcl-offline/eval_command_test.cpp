@@ -21,6 +21,14 @@ std::string drive_csv(double offset_y) {
   return text.str();
 }
 
+// The same drive as localize writes it, claiming `std_xy` metres and 0.05 rad.
+std::string drive_with_spread_csv(double offset_y, double std_xy) {
+  std::ostringstream text;
+  text << "time,x,y,yaw,std_x,std_y,std_yaw,particles,cov_xy\n";
+  for (int t = 0; t <= 10; ++t) text << t << "," << t << "," << offset_y << ",0," << std_xy << "," << std_xy << ",0.05,500,0\n";
+  return text.str();
+}
+
 struct EvalCommandTest : ::testing::Test {
   playerkit::testing::ScratchDirectory scratch{"eval_command_test"};
   std::string truth = scratch.write("truth.csv", drive_csv(0.0)).string();
@@ -37,11 +45,11 @@ struct EvalCommandTest : ::testing::Test {
 TEST_F(EvalCommandTest, SeveralRunsMakeOneMarkdownTableWithARowOverAll) {
   const EvalOptions options{{{exact, truth}, {shifted, truth}}, EvalFormat::markdown};
   EXPECT_EQ(output_of(options),
-            "| estimate | truth | matched | rmse_m | max_m | rmse_deg | max_deg | converged_s | lost |\n"
-            "|---|---|---:|---:|---:|---:|---:|---:|---:|\n"
-            "| " + exact + " | " + truth + " | 11/11 | 0.000 | 0.000 | 0.00 | 0.00 | 0.0 | 0 |\n"
-            "| " + shifted + " | " + truth + " | 11/11 | 0.100 | 0.100 | 0.00 | 0.00 | 0.0 | 0 |\n"
-            "| all 2 runs |  |  | 0.050 | 0.100 | 0.00 | 0.00 | 2/2 converged | 0 |\n");
+            "| estimate | truth | matched | rmse_m | max_m | rmse_deg | max_deg | converged_s | lost | in_2sigma |\n"
+            "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n"
+            "| " + exact + " | " + truth + " | 11/11 | 0.000 | 0.000 | 0.00 | 0.00 | 0.0 | 0 | - |\n"
+            "| " + shifted + " | " + truth + " | 11/11 | 0.100 | 0.100 | 0.00 | 0.00 | 0.0 | 0 | - |\n"
+            "| all 2 runs |  |  | 0.050 | 0.100 | 0.00 | 0.00 | 2/2 converged | 0 | - |\n");
 }
 
 TEST_F(EvalCommandTest, TheTextTableAlignsItsColumns) {
@@ -77,6 +85,22 @@ TEST_F(EvalCommandTest, OneRunKeepsItsFullReport) {
   EXPECT_NE(text.find("converged after 0.0 s"), std::string::npos) << text;
   const auto json = nlohmann::json::parse(output_of({{{shifted, truth}}, EvalFormat::json}));
   EXPECT_EQ(json["matched"], 11);  // the evaluation itself, as before
+}
+
+TEST_F(EvalCommandTest, TheClaimedSpreadsCoverageIsReported) {
+  const std::string honest = scratch.write("honest.csv", drive_with_spread_csv(0.1, 0.1)).string();
+  const std::string overconfident = scratch.write("overconfident.csv", drive_with_spread_csv(0.1, 0.02)).string();
+  EXPECT_NE(output_of({{{honest, truth}}, EvalFormat::text})
+                .find("the claimed 2-sigma held the truth in 100.0% of 11 rows; 0 confidently wrong (off by more "
+                      "than 0.50 m or 20 deg outside it)\n"),
+            std::string::npos);
+  const std::string table = output_of({{{honest, truth}, {overconfident, truth}}, EvalFormat::markdown});
+  EXPECT_NE(table.find("| 0 | 100.0% |\n"), std::string::npos) << table;
+  EXPECT_NE(table.find("| 0 | 0.0% |\n"), std::string::npos) << table;
+  EXPECT_NE(table.find("2/2 converged | 0 | 50.0% |\n"), std::string::npos) << table;
+  const auto json = nlohmann::json::parse(output_of({{{overconfident, truth}}, EvalFormat::json}));
+  EXPECT_EQ(json["coverage"]["inside_2sigma"], 0);
+  EXPECT_NEAR(json["coverage"]["worst_position_sigmas"].get<double>(), 5.0, 1e-9);
 }
 
 }  // namespace eval_command_test

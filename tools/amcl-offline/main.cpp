@@ -31,11 +31,13 @@ Examples:
   amcl-offline eval runs/ --truth intel.log.gz --format markdown    a table: a row per runs/*.csv
   amcl-offline sweep run sweep.json -o sweep/ -j 2 --format markdown   logs x parameters x seeds
 
-localize writes one row per scan: time,x,y,yaw,std_x,std_y,std_yaw,particles
+localize writes one row per scan: time,x,y,yaw,std_x,std_y,std_yaw,particles,cov_xy
 (metres, radians; --format log: Player log localize:0 lines instead), and a one-line summary on stderr: scans, wall time,
-real-time factor. eval reports the absolute trajectory error (RMSE and max
-of position and heading) and the time and distance to convergence (within
-0.3 m and 10 degrees for 5 s).
+real-time factor; then a warning for each stretch where the filter's own 2-sigma
+passed 0.5 m or 20 degrees (unsure of the pose). eval reports the absolute
+trajectory error (RMSE and max of position and heading), the time and distance
+to convergence (within 0.3 m and 10 degrees for 5 s), and how often the truth
+lay inside the claimed 2-sigma ellipse and heading interval.
 
 Output files: -o and --plot may not name an input (also as ./x, a symlink or a hard
 link: exit 2). Each is written to a temporary beside it and renamed at the end, so a
