@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <sstream>
 
@@ -237,6 +238,13 @@ std::string RebEmulator::describe() const {
   std::ostringstream out;
   out << "REB UBot (" << params_.subclass << "), IR " << (ir_on_ ? "on" : "off") << ", battery "
       << options_.battery_volts << " V";
+  // The wheels and the true pose, as the other robots' emulators show them: what a
+  // driver's odometry is checked against (docs/reference-checks).
+  const geometry::Pose2& pose = drive_.true_pose();
+  char where[120];
+  std::snprintf(where, sizeof where, ", wheels %d/%d pulses/10 ms, at (%.2f, %.2f, %.0f deg)", left_.speed, right_.speed,
+                pose.x, pose.y, pose.yaw * 180.0 / std::numbers::pi);
+  out << where;
   return out.str();
 }
 

@@ -1,6 +1,7 @@
 // The emulated UBot on a simulated clock, against reb.md §6.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <string>
 
 #include "families/reb/emulator/reb_emulator.hpp"
@@ -87,6 +88,21 @@ TEST(RebEmulator, TurnsOnTheSpotWhenTheWheelsOppose) {
   session.run(1s);
   EXPECT_NEAR(session.board.drive().true_pose().yaw, 90.0 * 3.14159265 / 180.0, 0.1);
   EXPECT_NEAR(session.board.drive().true_pose().x, 0.0, 1e-3);
+}
+
+TEST(RebEmulator, DescribesItsWheelsAndTruePose) {
+  // --stats shows what a driver's odometry is checked against (reference check, issue 29).
+  Session session;
+  session.say("D,2,-27");
+  session.say("D,0,-27");
+  session.run(1s);
+  const std::string text = session.board.describe();
+  EXPECT_NE(text.find("wheels -27/-27 pulses/10 ms"), std::string::npos) << text;
+  const geometry::Pose2& pose = session.board.drive().true_pose();
+  EXPECT_NEAR(pose.yaw * 180.0 / 3.14159265, 90.0, 6.0);
+  char where[80];
+  std::snprintf(where, sizeof where, ", at (%.2f, %.2f, %.0f deg)", pose.x, pose.y, pose.yaw * 180.0 / 3.14159265358979);
+  EXPECT_NE(text.find(where), std::string::npos) << text;
 }
 
 TEST(RebEmulator, PositionMovesStopOnTarget) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <sstream>
 #include <utility>
@@ -267,6 +268,11 @@ std::string RflexEmulator::describe() const {
   out << "RFLEX " << options_.model.name << (braked_ ? ", braked" : "")
       << (reporting_motion() ? ", reporting" : ", silent") << (sonar_on_ ? ", sonar on" : "")
       << (ir_on_ ? ", IR on" : "");
+  // The true pose, what a driver's odometry is checked against (docs/reference-checks).
+  const geometry::Pose2& pose = drive_.true_pose();
+  char where[80];
+  std::snprintf(where, sizeof where, ", at (%.2f, %.2f, %.0f deg)", pose.x, pose.y, pose.yaw * 180.0 / std::numbers::pi);
+  out << where;
   return out.str();
 }
 

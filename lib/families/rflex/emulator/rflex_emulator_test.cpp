@@ -4,6 +4,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "families/rflex/protocol/rflex_packet.hpp"
 
@@ -81,6 +83,13 @@ TEST(RflexEmulator, CountersFollowTheCommandedVelocitiesInTheModelsUnits) {
   const auto reports = bench.run_for(100ms);
   ASSERT_EQ(reports.size(), 2U);
   EXPECT_EQ(hw::read_motion_report(reports[1])->velocity, -17500);
+  // --stats shows the true pose, what a driver's odometry is checked against (reference check, issue 29).
+  const std::string text = bench.robot.describe();
+  const geometry::Pose2& pose = bench.robot.drive().true_pose();
+  char where[80];
+  std::snprintf(where, sizeof where, ", at (%.2f, %.2f, %.0f deg)", pose.x, pose.y, pose.yaw * 180.0 / 3.14159265358979);
+  EXPECT_NE(text.find(where), std::string::npos) << text;
+  EXPECT_NE(text.find(", at (0.20, "), std::string::npos) << text;
 }
 
 TEST(RflexEmulator, BrakeHoldsTheRobotAndDefaultsStopIt) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <stdexcept>
 #include <utility>
@@ -257,6 +258,11 @@ std::string SegwayRmpEmulator::describe() const {
   if (shut_down_) text += ", shut down";
   if (watchdog_stopped_) text += ", stopped by its watchdog";
   text += ", " + std::to_string(status_sets_) + " status sets, " + std::to_string(commands_) + " commands";
+  // The true pose, what a driver's odometry is checked against (docs/reference-checks).
+  const geometry::Pose2& pose = drive_->true_pose();
+  char where[80];
+  std::snprintf(where, sizeof where, ", at (%.2f, %.2f, %.0f deg)", pose.x, pose.y, pose.yaw * 180.0 / std::numbers::pi);
+  text += where;
   return text;
 }
 

@@ -100,6 +100,9 @@ TEST(SegwayRmpEmulator, VelocityCommandsMoveTheCountersInTheSheetsUnits) {
   EXPECT_NEAR(status.left_wheel_velocity, 166, 1);
   EXPECT_NEAR(status.right_wheel_velocity, 166, 1);
   EXPECT_NEAR(session.robot.world_pose()->x, 0.2, 0.01);
+  // --stats shows the true pose, what a driver's odometry is checked against (reference check, issue 29).
+  const std::string text = session.robot.describe();
+  EXPECT_NE(text.find(", at (0.2"), std::string::npos) << text;
 }
 
 TEST(SegwayRmpEmulator, TurningCounterClockwiseGrowsYawAndReportsAClockwiseRate) {
