@@ -19,18 +19,18 @@ TEST(UncertainStretches, TheEllipsesLongAxisCountsNotTheAxesOfTheMap) {
 }
 
 TEST(UncertainStretches, EachUnsureStretchIsReportedOnceWithItsWorst) {
-  UncertaintyWatch watch;  // 0.5 m, 20 degrees
+  UncertaintyWatch watch;  // 1 m, 60 degrees
   const double degree = std::numbers::pi / 180.0;
-  EXPECT_FALSE(watch.observe(0.0, spread(0.1, 0.1, 2 * degree)));
-  EXPECT_FALSE(watch.observe(1.0, spread(0.4, 0.1, 2 * degree)));   // 0.8 m: unsure
-  EXPECT_FALSE(watch.observe(2.0, spread(0.1, 0.1, 15 * degree)));  // 30 degrees: unsure
+  EXPECT_FALSE(watch.observe(0.0, spread(0.45, 0.1, 25 * degree)));  // 0.9 m, 50 degrees: sure enough
+  EXPECT_FALSE(watch.observe(1.0, spread(0.6, 0.1, 2 * degree)));   // 1.2 m: lost
+  EXPECT_FALSE(watch.observe(2.0, spread(0.1, 0.1, 35 * degree)));  // 70 degrees: lost
   const auto ended = watch.observe(3.0, spread(0.1, 0.1, 2 * degree));
   ASSERT_TRUE(ended);
   EXPECT_EQ(ended->start_time, 1.0);
   EXPECT_EQ(ended->end_time, 2.0);
   EXPECT_EQ(ended->rows, 2u);
-  EXPECT_NEAR(ended->worst_position_2sigma_m, 0.8, 1e-12);
-  EXPECT_NEAR(ended->worst_heading_2sigma_rad, 30 * degree, 1e-12);
+  EXPECT_NEAR(ended->worst_position_2sigma_m, 1.2, 1e-12);
+  EXPECT_NEAR(ended->worst_heading_2sigma_rad, 70 * degree, 1e-12);
   EXPECT_FALSE(watch.observe(4.0, spread(0.1, 0.1, 2 * degree)));
   EXPECT_FALSE(watch.finish());
 }

@@ -76,6 +76,9 @@ assert c["rows"] == 910 and c["share"] >= 0.9 and c["confidently_wrong"] == 0, c
   [ "${BASH_REMATCH[1]}" -gt 50000 ] && [ "${BASH_REMATCH[1]}" -le 100000 ]
   [[ "$stderr" =~ found\ after\ ([0-9.]+)\ s\ of\ log ]]
   found_at=${BASH_REMATCH[1]}
+  # Until the search narrowed down, the filter said it was lost, from the
+  # first scan on (the log's first scan is at 32.9 s).
+  [[ "$stderr" =~ warning:\ lost\ \(its\ own\ 2-sigma\ past\ 1\ m\ or\ 60\ deg\)\ from\ 32\.9\ s\ to\ ([0-9.]+)\ s ]]
   run --separate-stderr "$amcl_offline" eval estimate.csv --truth "$intel" --json
   [ "$status" -eq 0 ]
   # The evaluation agrees that it converged, and stayed within 0.15 m after.

@@ -126,7 +126,7 @@ int run_localize(const LocalizeOptions& options, std::ostream& out, std::ostream
   }
   if (auto last = watch.finish()) unsure.push_back(*last);
   for (const auto& stretch : unsure) {
-    err << std::fixed << std::setprecision(1) << "amcl-offline: warning: unsure of the pose from " << stretch.start_time
+    err << std::fixed << std::setprecision(1) << "amcl-offline: warning: lost (its own 2-sigma past 1 m or 60 deg) from " << stretch.start_time
         << " s to " << stretch.end_time << " s (" << stretch.rows << (stretch.rows == 1 ? " scan" : " scans")
         << "): 2-sigma up to " << std::setprecision(2) << stretch.worst_position_2sigma_m << " m and "
         << std::setprecision(0) << stretch.worst_heading_2sigma_rad / geometry::kRadiansPerDegree << " deg\n";

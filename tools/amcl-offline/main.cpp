@@ -34,7 +34,7 @@ Examples:
 localize writes one row per scan: time,x,y,yaw,std_x,std_y,std_yaw,particles,cov_xy
 (metres, radians; --format log: Player log localize:0 lines instead), and a one-line summary on stderr: scans, wall time,
 real-time factor; then a warning for each stretch where the filter's own 2-sigma
-passed 0.5 m or 20 degrees (unsure of the pose). eval reports the absolute
+passed 1 m or 60 degrees (lost, by its own account). eval reports the absolute
 trajectory error (RMSE and max of position and heading), the time and distance
 to convergence (within 0.3 m and 10 degrees for 5 s), and how often the truth
 lay inside the claimed 2-sigma ellipse and heading interval.
