@@ -99,13 +99,18 @@ std::vector<Telegram> GarminNmeaEmulator::take_output() { return std::exchange(o
 
 void GarminNmeaEmulator::send(const std::string& line) {
   std::vector<std::uint8_t> bytes(line.begin(), line.end());
-  bytes.push_back('\r');
-  bytes.push_back('\n');
   if (baud() != 0 && host_baud_ != 0 && host_baud_ != baud()) {
+    bytes.push_back('\r');
+    bytes.push_back('\n');
     garble(bytes);
     output_.push_back({std::move(bytes), false});
   } else {
-    output_.push_back({std::move(bytes), true});
+    // The sentence and its CR LF go out as two telegrams: a "bad checksum" fault corrupts a telegram's last byte,
+    // which must be the second digit of `*hh`, not the LF (a lost LF is a framing fault: it merged two sentences,
+    // and the 1.5 driver's "bad checksum: warned, still parsed" of sheet §6.7 was never what it saw).
+    const bool has_checksum = line.size() >= 3 && line[line.size() - 3] == '*';
+    output_.push_back({std::move(bytes), has_checksum});
+    output_.push_back({{'\r', '\n'}, false});
   }
   ++sentences_sent_;
 }

@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
+#include <utility>
+
 #include "families/garminnmea/protocol/gps_fix_tracker.hpp"
 #include "families/garminnmea/protocol/gpsd_check_test_support.hpp"
 #include "families/garminnmea/protocol/utm.hpp"
@@ -17,10 +20,18 @@ namespace garminnmea_emulator_test {
 namespace gps = hardware::garminnmea;
 using namespace std::chrono_literals;
 
+// The lines the receiver sent by `now`, each with its CR LF (a sentence and its line end are two telegrams).
 std::vector<std::string> lines_until(GarminNmeaEmulator& emulator, Duration now) {
   emulator.advance(now);
   std::vector<std::string> lines;
-  for (const Telegram& t : emulator.take_output()) lines.emplace_back(t.bytes.begin(), t.bytes.end());
+  std::string line;
+  for (const Telegram& t : emulator.take_output()) {
+    for (const std::uint8_t byte : t.bytes) {
+      line.push_back(static_cast<char>(byte));
+      if (byte == '\n') lines.push_back(std::exchange(line, {}));
+    }
+  }
+  if (!line.empty()) lines.push_back(line);
   return lines;
 }
 
@@ -98,6 +109,28 @@ TEST(GarminNmeaEmulator, ASearchingReceiverSaysSo) {
     }
   }
   EXPECT_EQ(reports, 4);  // one GGA of quality 0 a cycle
+}
+
+// Found by running Player 2.1.3's garminnmea with `--fault bad-checksum` (docs/reference-checks/
+// 2026-12-08-serial-sensors.md): the fault corrupts a telegram's last byte, which was the sentence's LF, so the
+// driver saw merged sentences ("couldn't find an end character") instead of a bad checksum. The checksum digits
+// now end their own telegram, the CR LF follows in another that carries no checksum.
+TEST(GarminNmeaEmulator, ASentenceEndsItsTelegramWithItsChecksumTheLineEndFollows) {
+  GarminNmeaEmulator receiver(GarminNmeaGenerated{});
+  receiver.advance(999ms);
+  const std::vector<Telegram> out = receiver.take_output();
+  ASSERT_GE(out.size(), 16u);
+  ASSERT_EQ(out.size() % 2, 0u);
+  for (std::size_t i = 0; i < out.size(); i += 2) {
+    const std::string sentence(out[i].bytes.begin(), out[i].bytes.end());
+    ASSERT_GE(sentence.size(), 4u);
+    EXPECT_EQ(sentence.front(), '$');
+    EXPECT_EQ(sentence[sentence.size() - 3], '*') << sentence;
+    EXPECT_TRUE(std::isxdigit(static_cast<unsigned char>(sentence.back()))) << sentence;
+    EXPECT_TRUE(out[i].has_checksum);
+    EXPECT_EQ(out[i + 1].bytes, (std::vector<std::uint8_t>{'\r', '\n'}));
+    EXPECT_FALSE(out[i + 1].has_checksum);
+  }
 }
 
 TEST(GarminNmeaEmulator, AHostWritingAtAnotherSpeedReadsGarbage) {
