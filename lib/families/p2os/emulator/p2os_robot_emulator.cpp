@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -479,16 +480,21 @@ double P2osRobotEmulator::sonar_range(int index) const {
 std::string P2osRobotEmulator::describe() const {
   std::string text = std::string(params_.robot_class) + " " + std::string(params_.subclass) +
                      " \"" + options_.robot_name + "\", ";
+  // Where the robot truly is, as every robot emulator says it: what a
+  // driver's odometry and a navigation run are checked against.
+  const geometry::Pose2 pose = drive_.true_pose();
+  char where[64];
+  std::snprintf(where, sizeof where, ", at (%.2f, %.2f, %.0f deg)", pose.x, pose.y, pose.yaw * 180.0 / std::numbers::pi);
   switch (state_) {
-    case P2osLinkState::unconnected: return text + "waiting for SYNC0";
-    case P2osLinkState::got_sync0: return text + "handshake: SYNC0 echoed";
-    case P2osLinkState::got_sync1: return text + "handshake: SYNC1 echoed";
-    case P2osLinkState::synced: return text + "synchronised, waiting for OPEN";
+    case P2osLinkState::unconnected: return text + "waiting for SYNC0" + where;
+    case P2osLinkState::got_sync0: return text + "handshake: SYNC0 echoed" + where;
+    case P2osLinkState::got_sync1: return text + "handshake: SYNC1 echoed" + where;
+    case P2osLinkState::synced: return text + "synchronised, waiting for OPEN" + where;
     case P2osLinkState::connected: break;
   }
   const auto period_ms = std::chrono::duration_cast<std::chrono::milliseconds>(options_.sip_period).count();
   return text + "connected, motors " + (motors_enabled_ ? "enabled" : "disabled") + ", sonar " +
-         (sonar_on_ ? "on" : "off") + ", a SIP every " + std::to_string(period_ms) + " ms";
+         (sonar_on_ ? "on" : "off") + ", a SIP every " + std::to_string(period_ms) + " ms" + where;
 }
 
 }  // namespace playerkit::emulators
