@@ -47,13 +47,18 @@ class AmclFilter {
   void set_pose(const geometry::Pose2& mean, const Eigen::Matrix3d& covariance);
   // max_particles drawn from N(mean, covariance) ends a global search.
   // A global search: global_particles() uniform over free cells with
-  // uniform yaw, searched as AmclParameters' "global start" says.
+  // uniform yaw, searched as AmclParameters' "global start" says. On a map
+  // they cover thinly, the first scan with returns then puts all but a
+  // share of them where it fits (seed_search_* parameters).
   void set_global();
   // What a global start draws: global_particles_per_square_metre of the
   // map's free area, clamped to [max_particles, global_particles_most].
   std::size_t global_particles() const;
   // True from set_global() until one cluster holds the belief.
   bool searching() const { return searching_; }
+  // True from set_global() until the first scan seeds the search, when the
+  // map is too large for a dense uniform draw (seed_search_below_density).
+  bool seed_search_pending() const { return seed_search_pending_; }
 
   // Feed odometry (robot pose in the odometry frame) and optionally the scan
   // taken at that pose. The first call (and the first after set_pose or
@@ -98,6 +103,9 @@ class AmclFilter {
   LikelihoodFieldModel& likelihood_field();
   BeamModel& beam_model();
   void restart();
+  // Replaces the uniform draw by the candidates on a coarse grid of poses
+  // that best fit the prepared beams (AmclParameters' seed_search_*).
+  void seed_search_from_scan();
 
   AmclParameters parameters_;
   std::shared_ptr<const grid::OccupancyGrid> map_;
@@ -126,6 +134,11 @@ class AmclFilter {
   bool searching_ = false;
   std::size_t search_particles_ = 0;  // KLD's ceiling while searching
   std::size_t found_updates_ = 0;     // laser updates in a row the search's end held
+  bool seed_search_pending_ = false;
+  std::vector<Particle> seed_candidates_;  // a chunk of the seed search's poses
+  std::vector<double> seed_chunk_scores_;
+  std::vector<float> seed_scores_;          // every candidate's, for ranking
+  std::vector<std::uint32_t> seed_order_;
 };
 
 }  // namespace playerkit::amcl

@@ -1,6 +1,7 @@
 #include "algorithms/amcl/amcl_parameters.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -34,6 +35,12 @@ void validate(const AmclParameters& p) {
           "search_end_weight must lie in (0, 1]");
   require(is_positive(p.search_end_spread), "search_end_spread must be positive");
   require(p.search_end_updates >= 1, "search_end_updates must be at least 1");
+  require(is_non_negative(p.seed_search_position_step), "seed_search_position_step must be at least 0 (0: off)");
+  require(is_positive(p.seed_search_heading_step) && p.seed_search_heading_step <= std::numbers::pi,
+          "seed_search_heading_step must lie in (0, pi]");
+  require(p.seed_search_candidates >= 1, "seed_search_candidates must be at least 1");
+  require(is_probability(p.seed_search_uniform_share), "seed_search_uniform_share must lie in [0, 1]");
+  require(is_non_negative(p.seed_search_below_density), "seed_search_below_density must be non-negative");
   require(is_non_negative(p.rotation_noise_from_rotation) &&
               is_non_negative(p.rotation_noise_from_translation) &&
               is_non_negative(p.translation_noise_from_translation) &&

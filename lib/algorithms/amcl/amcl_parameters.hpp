@@ -53,6 +53,35 @@ struct AmclParameters {
   double search_end_weight = 0.9;
   double search_end_spread = 0.5;
   std::size_t search_end_updates = 30;
+  // The search starts where the first scan fits (coarse to fine). On a map
+  // too large for global_particles_most to cover densely, Player 1.5's
+  // uniform draw leaves a particle per 5 m^2 and 40 degrees over a 150 m
+  // office floor, and the filter locks onto some other corridor (never
+  // converged in 8 runs of 8, docs/amcl.md 2026-12-08). Instead the first
+  // scan with returns scores a grid of candidate poses over all free space,
+  // seed_search_position_step apart (m) at every seed_search_heading_step
+  // (rad), with the likelihood field widened by half a step (sigma_hit and
+  // seed_search_position_step / 2 added in quadrature) so that a candidate
+  // off the true pose by up to half a step still scores as the place it
+  // is. The seed_search_candidates best (the true pose's candidate ranked
+  // within the first 1600 of 2.8 million on the test floors) each move to
+  // the best of a 3 x 3 x 3 grid over their cell and heading step at
+  // sigma_hit, and the search's particles are spread a third of a step
+  // around them, but for seed_search_uniform_share that stays uniform in
+  // case the first scan misleads (people, an open door). The filter's own
+  // updates pick among them as the robot moves. It runs when the uniform
+  // draw would be thinner than seed_search_below_density particles per m^2
+  // (the bundled logs were measured to need 100-200: "global start"
+  // above), so maps the uniform draw covers start as before; 0 for
+  // seed_search_position_step turns it off (1.5's and ROS's uniform
+  // start). Not in 1.5 or ROS: correlative scan matching (Olson 2009) as
+  // the proposal of the first particles, in the spirit of Thrun, Fox and
+  // Burgard's mixture MCL, which draws particles from the scan.
+  double seed_search_position_step = 0.5;
+  double seed_search_heading_step = 10.0 * std::numbers::pi / 180;
+  std::size_t seed_search_candidates = 10000;
+  double seed_search_uniform_share = 0.1;
+  double seed_search_below_density = 100.0;
 
   // --- motion model (Probabilistic Robotics table 5.6) ---
   // Each is a variance coefficient: e.g. the translation's standard deviation
