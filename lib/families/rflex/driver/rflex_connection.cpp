@@ -20,6 +20,7 @@ constexpr std::uint32_t kReportPeriod = 100000;
 constexpr std::uint32_t kBothAxes = 3;
 // What one reconnection attempt waits for an answer: requests wait for it.
 constexpr auto kAttemptBudget = 300ms;
+constexpr auto kAskAgainEvery = 500ms;  // the start-up requests, until the controller answers
 
 std::string seconds_text(std::chrono::steady_clock::duration duration) {
   std::ostringstream out;
@@ -63,16 +64,23 @@ bool RflexConnection::start_session(links::ByteLink& link, Clock::time_point dea
   link_error_.reset();
   reader_->flush();
   const auto [translation, rotation] = rest_commands(settings_);
-  for (const hw::Packet& packet : {hw::motion_report_request(kReportPeriod, kBothAxes),
-                                   hw::dio_reports_request(kReportPeriod), hw::set_defaults(),
-                                   hw::axis_set_direction(translation), hw::axis_set_direction(rotation),
-                                   hw::system_status_request()}) {
-    link.write_all(hw::encode_packet(packet), links::deadline_in(500ms));
-  }
-  // Any whole packet is the controller answering.
+  // The controller reports only what it was asked for; one still booting
+  // (deaf when the requests went out) would never answer, so they are sent
+  // again every half second until it does.
+  Clock::time_point ask_again_at = Clock::now();
   while (Clock::now() < deadline) {
     if (stop != nullptr && stop->stop_requested()) return false;
-    if (auto telegram = reader_->next(std::min(deadline, links::deadline_in(100ms)))) {
+    if (Clock::now() >= ask_again_at) {
+      for (const hw::Packet& packet : {hw::motion_report_request(kReportPeriod, kBothAxes),
+                                       hw::dio_reports_request(kReportPeriod), hw::set_defaults(),
+                                       hw::axis_set_direction(translation), hw::axis_set_direction(rotation),
+                                       hw::system_status_request()}) {
+        link.write_all(hw::encode_packet(packet), links::deadline_in(500ms));
+      }
+      ask_again_at = Clock::now() + kAskAgainEvery;
+    }
+    // Any whole packet is the controller answering.
+    if (auto telegram = reader_->next(std::min({deadline, ask_again_at, links::deadline_in(100ms)}))) {
       if (const auto packet = hw::decode_packet(*telegram)) {
         readings_.restart_counters();
         odometry_was_ready_ = false;

@@ -34,7 +34,7 @@ TEST_P(RflexLineFaults, DataKeepsFlowingAndTheLinkCountsWhatItDropped) {
   EXPECT_TRUE(robot.wait_until([](RflexEmulator& e) { return e.braked(); }));
 }
 
-INSTANTIATE_TEST_SUITE_P(Faults, RflexLineFaults, ::testing::Values("bad-checksum=0.2", "garbage=0.2", "truncate=0.1"),
+INSTANTIATE_TEST_SUITE_P(Faults, RflexLineFaults, ::testing::Values("bad-checksum=0.2", "garbage=0.2", "truncate=0.1", "drop=0.02"),
                          [](const ::testing::TestParamInfo<std::string>& row) {
                            std::string name = row.param.substr(0, row.param.find('='));
                            std::erase(name, '-');
@@ -52,6 +52,17 @@ TEST(RflexFaults, ASilentRobotRefusesTheSubscriptionWithinTheTimeoutNamingThePor
   ASSERT_TRUE(eventually([&] { return robot.runner().now() > 3100ms; }));
   EXPECT_TRUE(devices.position().subscribe()) << devices.log.all();
   EXPECT_TRUE(more_data(devices.position()));
+}
+
+// Deaf and mute for a second after the line opens (a controller still
+// booting): the setup keeps asking within its timeout instead of failing.
+TEST(RflexFaults, ARobotSlowToWakeIsWaitedForWithinTheTimeout) {
+  EmulatedRflex robot({}, faults({"slow-start=1"}));
+  RflexDevices devices(robot.port(), robot_config("connect_timeout 5"));
+  ASSERT_TRUE(devices.position().subscribe()) << devices.log.all();
+  EXPECT_GE(robot.runner().now(), 1s);
+  EXPECT_TRUE(more_data(devices.position(), 3));
+  EXPECT_EQ(devices.log.count("no RFLEX controller answered", core::LogLevel::kError), 0u) << devices.log.all();
 }
 
 TEST(RflexFaults, AVanishedRobotIsSoughtAgainAndItsDataResumes) {
