@@ -6,7 +6,7 @@
 load helpers
 
 teardown() {
-  kill_left_running "${server_pid:-}" "${cat_pid:-}"
+  kill_left_running "${server_pid:-}" "${cat_pid:-}" "${emulator_pid:-}"
 }
 
 # arrived FILE X Y: the last wavefront sample in FILE says stopped (stall 1)
@@ -94,6 +94,39 @@ CFG
   jq -e '((.data.px - 5000) * (.data.px - 5000) + (.data.py - 2000) * (.data.py - 2000)) < 160000' <<<"$output"
   kill -TERM "$cat_pid"
   stop_cleanly "$server_pid"
+}
+
+@test "data/config/nav-pioneer.cfg: the same loop on p2os and sicklms200, against the emulated robot in the cave" {
+  # The emulated Pioneer and laser in simple.world's cave, in its frame,
+  # where the world puts the robot; the configuration is nav-sim.cfg's with
+  # p2os and sicklms200 in place of the simulator, ports moved here.
+  start_emulator "$BATS_TEST_TMPDIR/emulate.out" "$BATS_TEST_TMPDIR/emulate.err" \
+    p2os pose=2,2,45 sicklms200 --link "$BATS_TEST_TMPDIR/robot" --link "$BATS_TEST_TMPDIR/laser" \
+    --map "$repo_root/data/worlds/cave.yaml" --stats
+  sed -e "s|\"/tmp/robot\"|\"$BATS_TEST_TMPDIR/robot\"|" -e "s|\"/tmp/laser\"|\"$BATS_TEST_TMPDIR/laser\"|" \
+    -e "s|include \"nav-sim.cfg\"|include \"$repo_root/data/config/nav-sim.cfg\"|" \
+    "$repo_root/data/config/nav-pioneer.cfg" >"$BATS_TEST_TMPDIR/nav-pioneer.cfg"
+  start_server "$BATS_TEST_TMPDIR/serve.err" -p 0 "$BATS_TEST_TMPDIR/nav-pioneer.cfg"
+  "$player_cat" "localhost:$server_port" position:2 --format json >"$BATS_TEST_TMPDIR/nav.jsonl" 2>"$BATS_TEST_TMPDIR/cat.err" &
+  cat_pid=$!
+  wait_for_nonempty --pid "$cat_pid" --log "$BATS_TEST_TMPDIR/cat.err" "$BATS_TEST_TMPDIR/nav.jsonl"
+  # A Pioneer's motors start disabled (the simulator's do not): enabled
+  # through vfh, which passes MOTOR_POWER down to p2os, as a 1.5 client did.
+  "$player_send" "localhost:$server_port" position:1 req motor-power value=1
+  "$player_send" "localhost:$server_port" position:2 cmd xpos=5000 ypos=2000 yaw=0 type=1 state=1
+  wait_until --pid "$cat_pid" --timeout 240 --log "$BATS_TEST_TMPDIR/serve.err" "the robot at (5, 2)" \
+    arrived "$BATS_TEST_TMPDIR/nav.jsonl" 5000 2000
+  # The emulated robot itself is there: its true pose in the first stats
+  # line written after the arrival, within 0.4 m of (5, 2).
+  lines_then=$(grep -c ' at (' "$BATS_TEST_TMPDIR/emulate.err")
+  stats_after() { [ "$(grep -c ' at (' "$BATS_TEST_TMPDIR/emulate.err")" -gt "$lines_then" ]; }
+  wait_until --pid "$emulator_pid" "a stats line after the arrival" stats_after
+  read -r true_x true_y < <(grep -o ' at ([0-9.-]*, [0-9.-]*' "$BATS_TEST_TMPDIR/emulate.err" | tail -n 1 | tr -d 'at(,')
+  python3 -c 'import sys, math; assert math.hypot(float(sys.argv[1]) - 5, float(sys.argv[2]) - 2) < 0.4, sys.argv' \
+    "$true_x" "$true_y"
+  kill -TERM "$cat_pid"
+  stop_cleanly "$server_pid"
+  stop_cleanly "$emulator_pid"
 }
 
 @test "wavefront refuses a goal inside a wall at once and says why" {
