@@ -49,6 +49,7 @@ void AmclFilter::set_pose(const geometry::Pose2& mean, const Eigen::Matrix3d& co
   sample_gaussian(mean, covariance, parameters_.max_particles, rng_, particles_);
   searching_ = false;
   seed_search_pending_ = false;
+  seed_scans_.clear();
   found_updates_ = 0;
   apply_recovery_rates();
   restart();
@@ -62,6 +63,8 @@ void AmclFilter::set_global() {
                            map_->resolution();
   seed_search_pending_ = parameters_.seed_search_position_step > 0.0 &&
                          static_cast<double>(search_particles_) < parameters_.seed_search_below_density * free_area;
+  seed_scans_.clear();
+  seed_travel_ = 0.0;
   found_updates_ = 0;
   apply_recovery_rates();
   restart();
@@ -84,7 +87,8 @@ void AmclFilter::apply_recovery_rates() {
 }
 
 void AmclFilter::end_search_once_found() {
-  if (!searching_ || clusters_.empty()) return;
+  // Nor before the seed search has run: the uniform draw's clusters until then mean nothing.
+  if (!searching_ || clusters_.empty() || seed_search_pending_) return;
   const Hypothesis& heaviest = clusters_.front();
   const double spread = std::sqrt(std::max(0.0, heaviest.covariance(0, 0) + heaviest.covariance(1, 1)));
   if (heaviest.weight < parameters_.search_end_weight || !(spread <= parameters_.search_end_spread)) {
@@ -168,7 +172,7 @@ void AmclFilter::laser_update(const LaserScan& scan) {
   settings.beam_skip = settings.beam_skip && !clusters_.empty() && clusters_.front().weight >= 0.5;
   const auto returned_beams =
       static_cast<std::size_t>(std::count(beams_.no_return.begin(), beams_.no_return.end(), 0));
-  if (seed_search_pending_ && searching_ && returned_beams > 0) seed_search_from_scan();
+  if (seed_search_pending_ && searching_ && returned_beams > 0) gather_seed_evidence();
   log_likelihoods_.resize(particles_.size());
   std::size_t informative_beams = beams_.size();
   if (parameters_.laser_model == LaserModelType::beam) {
@@ -210,7 +214,18 @@ void AmclFilter::laser_update(const LaserScan& scan) {
   laser_update_pending_ = belief_uncertain() && unmoved_updates_ < parameters_.uncertain_updates_most;
 }
 
-void AmclFilter::seed_search_from_scan() {
+void AmclFilter::gather_seed_evidence() {
+  if (!seed_scans_.empty()) {
+    const geometry::Pose2& last = seed_scans_.back().odometry;
+    seed_travel_ += std::hypot(particle_odometry_.x - last.x, particle_odometry_.y - last.y);
+  }
+  seed_scans_.push_back({beams_, particle_odometry_});
+  if (seed_travel_ >= parameters_.seed_search_distance || seed_scans_.size() >= parameters_.seed_search_scans_most) {
+    seed_search_from_scans();
+  }
+}
+
+void AmclFilter::seed_search_from_scans() {
   seed_search_pending_ = false;
   const double resolution = map_->resolution();
   const int block = std::max(1, static_cast<int>(std::lround(parameters_.seed_search_position_step / resolution)));
@@ -230,10 +245,14 @@ void AmclFilter::seed_search_from_scan() {
   }
   if (positions.empty()) return;
 
-  // Coarse: every candidate scored with the field widened by half a step.
+  // Coarse: every candidate scored with the field widened by half a step,
+  // against the first scan; the best seed_search_pool_factor times
+  // seed_search_candidates of them against every later scan too, each
+  // where odometry says the robot went from there.
   LaserModelSettings coarse = LaserModelSettings::from(parameters_);
   coarse.beam_skip = false;
   coarse.sigma_hit = std::hypot(coarse.sigma_hit, 0.5 * position_step);
+  const PreparedBeams& first_beams = seed_scans_.front().beams;
   const std::size_t candidates = positions.size() * headings;
   seed_scores_.resize(candidates);
   constexpr std::size_t kChunkPositions = 512;
@@ -247,25 +266,53 @@ void AmclFilter::seed_search_from_scan() {
       }
     }
     seed_chunk_scores_.resize(seed_candidates_.size());
-    likelihood_field().log_likelihoods(seed_candidates_, beams_, coarse, seed_chunk_scores_);
+    likelihood_field().log_likelihoods(seed_candidates_, first_beams, coarse, seed_chunk_scores_);
     for (std::size_t k = 0; k < seed_candidates_.size(); ++k) {
       seed_scores_[first * headings + k] = static_cast<float>(seed_chunk_scores_[k]);
     }
   }
-
-  // The best, ties broken by index so a seed picks the same set everywhere.
-  const auto uniform = static_cast<std::size_t>(
-      std::lround(parameters_.seed_search_uniform_share * static_cast<double>(search_particles_)));
-  const std::size_t seeded = search_particles_ - std::min(uniform, search_particles_);
-  const std::size_t kept = std::min({candidates, seeded, parameters_.seed_search_candidates});
   seed_order_.resize(candidates);
   for (std::size_t k = 0; k < candidates; ++k) seed_order_[k] = static_cast<std::uint32_t>(k);
-  if (kept > 0 && kept < candidates) {
-    std::nth_element(seed_order_.begin(), seed_order_.begin() + static_cast<std::ptrdiff_t>(kept - 1),
+  // The best `count` of seed_order_ first, ties broken by index so a seed
+  // picks the same set everywhere.
+  const auto keep_best = [&](std::size_t count) {
+    if (count == 0 || count >= seed_order_.size()) return;
+    std::nth_element(seed_order_.begin(), seed_order_.begin() + static_cast<std::ptrdiff_t>(count - 1),
                      seed_order_.end(), [&](std::uint32_t a, std::uint32_t b) {
                        return seed_scores_[a] != seed_scores_[b] ? seed_scores_[a] > seed_scores_[b] : a < b;
                      });
+    seed_order_.resize(count);
+  };
+  const auto candidate_pose = [&](std::uint32_t candidate) {
+    const Eigen::Vector2d& position = positions[candidate / headings];
+    return geometry::Pose2{position.x(), position.y(),
+                           geometry::normalize_angle(heading_offset +
+                                                     static_cast<double>(candidate % headings) * heading_step)};
+  };
+  if (seed_scans_.size() > 1) {
+    keep_best(parameters_.seed_search_pool_factor * parameters_.seed_search_candidates);
+    seed_candidates_.resize(seed_order_.size());
+    seed_chunk_scores_.resize(seed_order_.size());
+    for (std::size_t j = 1; j < seed_scans_.size(); ++j) {
+      const geometry::Pose2 moved = seed_scans_.front().odometry.between(seed_scans_[j].odometry);
+      for (std::size_t i = 0; i < seed_order_.size(); ++i) {
+        seed_candidates_[i].pose = candidate_pose(seed_order_[i]).compose(moved);
+      }
+      likelihood_field().log_likelihoods(seed_candidates_, seed_scans_[j].beams, coarse, seed_chunk_scores_);
+      for (std::size_t i = 0; i < seed_order_.size(); ++i) {
+        seed_scores_[seed_order_[i]] += static_cast<float>(seed_chunk_scores_[i]);
+      }
+    }
   }
+
+  const auto uniform = static_cast<std::size_t>(
+      std::lround(parameters_.seed_search_uniform_share * static_cast<double>(search_particles_)));
+  const std::size_t seeded = search_particles_ - std::min(uniform, search_particles_);
+  keep_best(std::min(seeded, parameters_.seed_search_candidates));
+  const std::size_t kept = seed_order_.size();
+  // Where each kept candidate stands now, by odometry since the first scan.
+  const geometry::Pose2 since_first = seed_scans_.front().odometry.between(seed_scans_.back().odometry);
+  const PreparedBeams& last_beams = seed_scans_.back().beams;
 
   // Fine: each kept candidate moves to the best pose of a 3 x 3 x 3 grid
   // over its cell and heading step, scored at sigma_hit; its particles
@@ -285,22 +332,19 @@ void AmclFilter::seed_search_from_scan() {
     const std::size_t count = std::min(kChunkCandidates, kept - first);
     seed_candidates_.resize(count * kFinePoses);
     for (std::size_t i = 0; i < count; ++i) {
-      const std::uint32_t candidate = seed_order_[first + i];
-      const Eigen::Vector2d& position = positions[candidate / headings];
-      const double yaw = heading_offset + static_cast<double>(candidate % headings) * heading_step;
+      const geometry::Pose2 now = candidate_pose(seed_order_[first + i]).compose(since_first);
       std::size_t k = i * kFinePoses;
       for (int a = 0; a < kFine; ++a) {
         for (int b = 0; b < kFine; ++b) {
           for (int c = 0; c < kFine; ++c) {
-            seed_candidates_[k++].pose = {position.x() + (a - kFine / 2) * fine_position,
-                                          position.y() + (b - kFine / 2) * fine_position,
-                                          geometry::normalize_angle(yaw + (c - kFine / 2) * fine_heading)};
+            seed_candidates_[k++].pose = {now.x + (a - kFine / 2) * fine_position, now.y + (b - kFine / 2) * fine_position,
+                                          geometry::normalize_angle(now.yaw + (c - kFine / 2) * fine_heading)};
           }
         }
       }
     }
     seed_chunk_scores_.resize(seed_candidates_.size());
-    likelihood_field().log_likelihoods(seed_candidates_, beams_, fine, seed_chunk_scores_);
+    likelihood_field().log_likelihoods(seed_candidates_, last_beams, fine, seed_chunk_scores_);
     for (std::size_t i = 0; i < count; ++i) {
       const auto begin = seed_chunk_scores_.begin() + static_cast<std::ptrdiff_t>(i * kFinePoses);
       const auto best = std::max_element(begin, begin + static_cast<std::ptrdiff_t>(kFinePoses));
@@ -328,6 +372,7 @@ void AmclFilter::seed_search_from_scan() {
   std::vector<std::uint32_t>().swap(seed_order_);
   std::vector<Particle>().swap(seed_candidates_);
   std::vector<double>().swap(seed_chunk_scores_);
+  std::vector<SeedScan>().swap(seed_scans_);
 }
 
 bool AmclFilter::belief_uncertain() const {

@@ -103,9 +103,12 @@ class AmclFilter {
   LikelihoodFieldModel& likelihood_field();
   BeamModel& beam_model();
   void restart();
-  // Replaces the uniform draw by the candidates on a coarse grid of poses
-  // that best fit the prepared beams (AmclParameters' seed_search_*).
-  void seed_search_from_scan();
+  // Keeps the prepared beams for the seed search; once they span
+  // seed_search_distance of travel, replaces the uniform draw by the
+  // candidates on a coarse grid of poses that best fit them all
+  // (AmclParameters' seed_search_*).
+  void gather_seed_evidence();
+  void seed_search_from_scans();
 
   AmclParameters parameters_;
   std::shared_ptr<const grid::OccupancyGrid> map_;
@@ -139,6 +142,12 @@ class AmclFilter {
   std::vector<double> seed_chunk_scores_;
   std::vector<float> seed_scores_;          // every candidate's, for ranking
   std::vector<std::uint32_t> seed_order_;
+  struct SeedScan {
+    PreparedBeams beams;
+    geometry::Pose2 odometry;  // where the particles' odometry stood at this scan
+  };
+  std::vector<SeedScan> seed_scans_;  // the evidence gathered so far
+  double seed_travel_ = 0.0;          // m of odometry path across seed_scans_
 };
 
 }  // namespace playerkit::amcl

@@ -39,6 +39,9 @@ void validate(const AmclParameters& p) {
   require(is_positive(p.seed_search_heading_step) && p.seed_search_heading_step <= std::numbers::pi,
           "seed_search_heading_step must lie in (0, pi]");
   require(p.seed_search_candidates >= 1, "seed_search_candidates must be at least 1");
+  require(is_non_negative(p.seed_search_distance), "seed_search_distance must be non-negative");
+  require(p.seed_search_scans_most >= 1, "seed_search_scans_most must be at least 1");
+  require(p.seed_search_pool_factor >= 1, "seed_search_pool_factor must be at least 1");
   require(is_probability(p.seed_search_uniform_share), "seed_search_uniform_share must lie in [0, 1]");
   require(is_non_negative(p.seed_search_below_density), "seed_search_below_density must be non-negative");
   require(is_non_negative(p.rotation_noise_from_rotation) &&

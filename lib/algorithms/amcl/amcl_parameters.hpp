@@ -55,24 +55,29 @@ struct AmclParameters {
   std::size_t search_end_updates = 30;
   // The search starts where the first scan fits (coarse to fine). On a map
   // too large for global_particles_most to cover densely, Player 1.5's
-  // uniform draw leaves a particle per 5 m^2 and 40 degrees over a 150 m
-  // office floor, and the filter locks onto some other corridor (never
-  // converged in 8 runs of 8, docs/amcl.md 2026-12-08). Instead the first
-  // scan with returns scores a grid of candidate poses over all free space,
-  // seed_search_position_step apart (m) at every seed_search_heading_step
-  // (rad), with the likelihood field widened by half a step (sigma_hit and
-  // seed_search_position_step / 2 added in quadrature) so that a candidate
-  // off the true pose by up to half a step still scores as the place it
-  // is. The seed_search_candidates best (the true pose's candidate ranked
-  // within the first 1600 of 2.8 million on the test floors) each move to
-  // the best of a 3 x 3 x 3 grid over their cell and heading step at
-  // sigma_hit, and the search's particles are spread a third of a step
-  // around them, but for seed_search_uniform_share that stays uniform in
-  // case the first scan misleads (people, an open door). The filter's own
-  // updates pick among them as the robot moves. It runs when the uniform
-  // draw would be thinner than seed_search_below_density particles per m^2
-  // (the bundled logs were measured to need 100-200: "global start"
-  // above), so maps the uniform draw covers start as before; 0 for
+  // uniform draw leaves about 5 particles per m^2, one per 70 degrees, on a
+  // 150 m office floor, and the filter locks onto some other corridor (0
+  // of 12 runs converged on two such floors, docs/amcl.md 2026-12-08).
+  // Instead the first scan with returns scores a grid of candidate poses
+  // over all free space, seed_search_position_step apart (m) at every
+  // seed_search_heading_step (rad), with the likelihood field widened by
+  // half a step (sigma_hit and seed_search_position_step / 2 added in
+  // quadrature) so that a candidate up to half a step off the true pose
+  // still scores as the place it is. The seed_search_candidates best each
+  // move to the best pose of a 3 x 3 x 3 grid over their cell and heading
+  // step at sigma_hit, and the search's particles spread a third of a
+  // step around those, but for seed_search_uniform_share that stays
+  // uniform in case the scan misleads (people, an open door). The
+  // filter's own updates then pick among them as the robot moves. With
+  // seed_search_distance above 0 the search waits until the robot has
+  // travelled that far (or seed_search_scans_most scans) and ranks the
+  // seed_search_pool_factor * seed_search_candidates best of the first
+  // scan by every scan since, each where odometry moved it: more evidence
+  // against look-alikes, at the price of a later start (on the test floors
+  // 4 m converged in 24 runs of 24 as 0 m did, after 4-13 m instead of
+  // 0-7 m). It runs when the uniform draw would be thinner than
+  // seed_search_below_density particles per m^2 (the bundled logs were
+  // measured to need 100-200: "global start" above); 0 for
   // seed_search_position_step turns it off (1.5's and ROS's uniform
   // start). Not in 1.5 or ROS: correlative scan matching (Olson 2009) as
   // the proposal of the first particles, in the spirit of Thrun, Fox and
@@ -80,6 +85,9 @@ struct AmclParameters {
   double seed_search_position_step = 0.5;
   double seed_search_heading_step = 10.0 * std::numbers::pi / 180;
   std::size_t seed_search_candidates = 10000;
+  double seed_search_distance = 0.0;  // m
+  std::size_t seed_search_scans_most = 40;
+  std::size_t seed_search_pool_factor = 5;
   double seed_search_uniform_share = 0.1;
   double seed_search_below_density = 100.0;
 

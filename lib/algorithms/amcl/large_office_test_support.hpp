@@ -6,7 +6,8 @@
 // corridors with drifting odometry and a noisy laser. Everything is drawn
 // from one seed. Irregular block, room and door sizes keep the floor from
 // mapping onto itself, but long stretches of corridor still look alike for
-// metres, which is what makes a global start hard at this scale.
+// metres, which is what makes a global start hard at this scale. Walls are
+// the faces a laser sees, unknown behind, as in a map made from scans.
 
 #include "algorithms/amcl/laser_scan.hpp"
 #include "algorithms/amcl/synthetic_room_test_support.hpp"
@@ -189,6 +190,23 @@ inline LargeOffice make_large_office(std::uint64_t seed, const LargeOfficeSpec& 
   }
   for (std::size_t j = 0; j < ys.size(); ++j) {
     for (std::size_t i = 0; i + 1 < xs.size(); ++i) furnish_corridor(true, xs[i].second, xs[i + 1].first, ys[j].first, ys[j].second);
+  }
+  // As a map made from scans has it: obstacles are what a laser saw, the
+  // faces next to free space; behind them is unknown. A floor solid
+  // behind every wall would score a pose inside a wall block perfectly
+  // (every endpoint on an obstacle), a trap no real map sets.
+  const grid::OccupancyGrid carved = map;
+  for (int row = 0; row < map.height(); ++row) {
+    for (int col = 0; col < map.width(); ++col) {
+      if (carved.at(col, row) == grid::CellState::free) continue;
+      bool faces_free = false;
+      for (int dr = -1; dr <= 1 && !faces_free; ++dr) {
+        for (int dc = -1; dc <= 1 && !faces_free; ++dc) {
+          faces_free = carved.contains(col + dc, row + dr) && carved.at(col + dc, row + dr) == grid::CellState::free;
+        }
+      }
+      map.set(col, row, faces_free ? grid::CellState::occupied : grid::CellState::unknown);
+    }
   }
   std::size_t free_cells = 0;
   for (const grid::CellState cell : map.cells()) free_cells += cell == grid::CellState::free ? 1 : 0;
