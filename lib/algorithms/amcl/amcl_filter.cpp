@@ -21,6 +21,25 @@ const AmclParameters& validated(const AmclParameters& parameters) {
   return parameters;
 }
 
+// `factor` x `factor` cells of `map` as one: an obstacle if any of them is,
+// else free if any is, else unknown.
+grid::OccupancyGrid coarsened(const grid::OccupancyGrid& map, int factor) {
+  if (factor <= 1) return map;
+  const int width = (map.width() + factor - 1) / factor;
+  const int height = (map.height() + factor - 1) / factor;
+  grid::OccupancyGrid coarse(width, height, map.resolution() * factor, map.origin(), grid::CellState::unknown);
+  for (int row = 0; row < map.height(); ++row) {
+    for (int col = 0; col < map.width(); ++col) {
+      const grid::CellState cell = map.at(col, row);
+      if (cell == grid::CellState::unknown) continue;
+      const int coarse_col = col / factor, coarse_row = row / factor;
+      const grid::CellState was = coarse.at(coarse_col, coarse_row);
+      if (was != grid::CellState::occupied) coarse.set(coarse_col, coarse_row, cell);
+    }
+  }
+  return coarse;
+}
+
 }  // namespace
 
 AmclFilter::AmclFilter(AmclParameters parameters, std::shared_ptr<const grid::OccupancyGrid> map,
@@ -245,6 +264,15 @@ void AmclFilter::seed_search_from_scans() {
   }
   if (positions.empty()) return;
 
+  // The coarse passes read a field of cells half a step wide, made from a
+  // map whose cell is an obstacle where any of its fine cells is: a 3000 x
+  // 3000 map's field is 9 MB, read at random, and its coarse copy a
+  // twenty-fifth of that stays in cache (the coarse pass took 1 s of a
+  // 150 m floor's run at 0.05 m cells).
+  const int coarse_factor = std::max(1, block / 2);
+  const grid::OccupancyGrid coarse_map = coarsened(*map_, coarse_factor);
+  LikelihoodFieldModel coarse_field(coarse_map, parameters_.likelihood_max_distance);
+
   // Coarse: every candidate scored with the field widened by half a step,
   // against the first scan; the best seed_search_pool_factor times
   // seed_search_candidates of them against every later scan too, each
@@ -266,7 +294,7 @@ void AmclFilter::seed_search_from_scans() {
       }
     }
     seed_chunk_scores_.resize(seed_candidates_.size());
-    likelihood_field().log_likelihoods(seed_candidates_, first_beams, coarse, seed_chunk_scores_);
+    coarse_field.log_likelihoods(seed_candidates_, first_beams, coarse, seed_chunk_scores_);
     for (std::size_t k = 0; k < seed_candidates_.size(); ++k) {
       seed_scores_[first * headings + k] = static_cast<float>(seed_chunk_scores_[k]);
     }
@@ -298,7 +326,7 @@ void AmclFilter::seed_search_from_scans() {
       for (std::size_t i = 0; i < seed_order_.size(); ++i) {
         seed_candidates_[i].pose = candidate_pose(seed_order_[i]).compose(moved);
       }
-      likelihood_field().log_likelihoods(seed_candidates_, seed_scans_[j].beams, coarse, seed_chunk_scores_);
+      coarse_field.log_likelihoods(seed_candidates_, seed_scans_[j].beams, coarse, seed_chunk_scores_);
       for (std::size_t i = 0; i < seed_order_.size(); ++i) {
         seed_scores_[seed_order_[i]] += static_cast<float>(seed_chunk_scores_[i]);
       }
