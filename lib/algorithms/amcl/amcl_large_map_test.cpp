@@ -5,6 +5,7 @@
 
 #include "algorithms/amcl/amcl_filter.hpp"
 #include "algorithms/amcl/large_office_test_support.hpp"
+#include "algorithms/amcl/synthetic_room_test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -65,6 +66,35 @@ TEST(AmclLargeMap, TheOfficeFloorIsLargeAndDrivable) {
   const test::LargeOffice again = test::make_large_office(1);
   EXPECT_TRUE(std::equal(office.map->cells().begin(), office.map->cells().end(), again.map->cells().begin()));
   EXPECT_EQ(office_route(again, 2).back().odometry, log.back().odometry);
+}
+
+// The room's uniform draw is dense (200 per m^2): it starts as before. The
+// floor's is not: the first scan puts nine tenths of the particles where
+// it fits, and some of them within a cluster cell of the robot.
+TEST(AmclLargeMap, ASeedSearchRunsOnlyWhereTheUniformDrawIsThin) {
+  EXPECT_FALSE(AmclFilter(AmclParameters{}, test::make_room(), 1).seed_search_pending());
+
+  const test::LargeOffice office = test::make_large_office(1);
+  AmclFilter filter(AmclParameters{}, office.map, 1);
+  EXPECT_TRUE(filter.seed_search_pending());
+  EXPECT_EQ(filter.particles().size(), filter.global_particles());
+  const auto log = office_route(office, 2);
+  const test::LoggedStep& first = log.front();
+  const auto near_the_robot = [&] {
+    std::size_t near = 0;
+    for (const Particle& p : filter.particles()) {
+      near += std::hypot(p.pose.x - first.truth.x, p.pose.y - first.truth.y) < 0.5 &&
+                      std::abs(geometry::angle_difference(p.pose.yaw, first.truth.yaw)) < 0.2
+                  ? 1
+                  : 0;
+    }
+    return near;
+  };
+  EXPECT_LT(near_the_robot(), 5u);  // a few in 20 000 m^2
+  ASSERT_TRUE(filter.update(first.odometry, &first.scan));
+  EXPECT_FALSE(filter.seed_search_pending());
+  EXPECT_EQ(filter.particles().size(), filter.global_particles());
+  EXPECT_GT(near_the_robot(), 20u);
 }
 
 TEST(AmclLargeMap, GlobalLocalizationConvergesInTheFirstHalfAtTheDefaults) {

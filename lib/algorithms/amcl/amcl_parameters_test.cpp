@@ -37,6 +37,13 @@ TEST(AmclParameters, RejectsNonsense) {
   rejects([](AmclParameters& p) { p.scan_likelihood_exponent = 1.5; });
   rejects([](AmclParameters& p) { p.beam_scan_likelihood_exponent = 0.0; });
   rejects([](AmclParameters& p) { p.beam_scan_likelihood_exponent = 1.5; });
+  rejects([](AmclParameters& p) { p.seed_search_position_step = -0.5; });
+  rejects([](AmclParameters& p) { p.seed_search_heading_step = 0.0; });
+  rejects([](AmclParameters& p) { p.seed_search_candidates = 0; });
+  rejects([](AmclParameters& p) { p.seed_search_uniform_share = 1.5; });
+  rejects([](AmclParameters& p) { p.seed_search_below_density = -1.0; });
+  rejects([](AmclParameters& p) { p.seed_search_distance = -1.0; });
+  rejects([](AmclParameters& p) { p.seed_search_pool_factor = 0; });
 }
 
 }  // namespace amcl_parameters_test
