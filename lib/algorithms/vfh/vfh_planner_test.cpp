@@ -198,6 +198,55 @@ TEST(VfhPlanner, TurnsOneWayOutOfADeadEndAndKeepsTurningThatWay) {
   EXPECT_GT(open.speed, 0.0);
 }
 
+// Free distance from (x, y) along `angle` in an alcove 1.7 m wide (walls at
+// y = -0.8 m and y = +0.9 m) closed by a wall at x = 1.1 m: where the
+// hospital world's goal (1.98, 1.08) lies.
+double alcove(double x, double y, double angle) {
+  const double c = std::cos(angle);
+  const double s = std::sin(angle);
+  double free = 8.0;
+  if (c > 1e-9) free = std::min(free, (1.1 - x) / c);
+  if (s > 1e-9) free = std::min(free, (0.9 - y) / s);
+  if (s < -1e-9) free = std::min(free, (-0.8 - y) / s);
+  return free;
+}
+
+TEST(VfhPlanner, DrivesStraightAtANearGoalInAnAlcoveThoughTheHistogramBlocksIt) {
+  const MiniWorld world{.x = 0, .y = 0, .yaw = 0, .ray = alcove};
+  const std::vector<double> ranges = world.scan();
+  VfhPlanner planner{VfhParameters{}};
+  // Walls all round within 1.1 m: the histogram blocks every direction.
+  ASSERT_TRUE(planner.step(as_scan(ranges), 90, kStep, 1.0).blocked);
+  // A goal 0.3 m ahead, with nothing in the robot's way to it, is not.
+  planner.reset();
+  const Steering near = planner.step(as_scan(ranges), 90, kStep, 1.0, 0.3);
+  EXPECT_FALSE(near.blocked);
+  ASSERT_TRUE(near.direction.has_value());
+  EXPECT_EQ(*near.direction, 90.0);
+  EXPECT_GT(near.speed, 0.0);
+  // Nor one a little off to the side.
+  planner.reset();
+  const Steering aside = planner.step(as_scan(ranges), 110, kStep, 1.0, 0.3);
+  ASSERT_TRUE(aside.direction.has_value());
+  EXPECT_EQ(*aside.direction, 110.0);
+  EXPECT_GT(aside.turn_rate, 0.0);
+  // A goal whose reaching would put the robot's front into the wall is.
+  planner.reset();
+  EXPECT_TRUE(planner.step(as_scan(ranges), 90, kStep, 1.0, 0.9).blocked);
+}
+
+TEST(VfhPlanner, ANearGoalBehindAnObstacleIsNotDrivenAtStraight) {
+  // A post 0.4 m ahead, slightly right of the line to a goal 0.8 m ahead.
+  const MiniWorld world{.x = 0, .y = 0, .yaw = 0, .ray = [](double, double, double angle) {
+                          return std::abs(angle + 0.1) < 0.12 ? 0.4 : 8.0;
+                        }};
+  const std::vector<double> ranges = world.scan();
+  VfhPlanner planner{VfhParameters{}};
+  const Steering s = planner.step(as_scan(ranges), 90, kStep, 1.0, 0.8);
+  ASSERT_TRUE(s.direction.has_value());
+  EXPECT_NE(*s.direction, 90.0);
+}
+
 TEST(VfhPlanner, ASpeedLimitCapsTheRamp) {
   VfhPlanner planner{VfhParameters{}};
   const std::vector<double> ranges = scan_of(kOpen);
