@@ -45,7 +45,7 @@ void VfhNavigator::go_to(const geometry::Pose2& goal) {
   // off, each time its localization corrects the odometric frame. Starting
   // over on each correction undid the turn to the goal's heading at every
   // one: just outside distance_epsilon again, the robot turned back to face
-  // the point, and rocked there for a minute and more.
+  // the point, and rocked there for half a minute and more.
   const bool refined = mode_ == Mode::goal && goal_ &&
                        std::hypot(goal.x - goal_->x, goal.y - goal_->y) < settings_.distance_epsilon;
   goal_ = goal;
