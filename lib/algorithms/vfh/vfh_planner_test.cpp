@@ -10,6 +10,7 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 namespace playerkit::vfh {
@@ -245,6 +246,22 @@ TEST(VfhPlanner, ANearGoalBehindAnObstacleIsNotDrivenAtStraight) {
   const Steering s = planner.step(as_scan(ranges), 90, kStep, 1.0, 0.8);
   ASSERT_TRUE(s.direction.has_value());
   EXPECT_NE(*s.direction, 90.0);
+}
+
+TEST(VfhPlanner, KeepsToOneOfTwoEqualOpeningsThoughTheGoalWobblesBetweenThem) {
+  // A post straight ahead 1 m off: an opening each side, mirror images; the
+  // goal right behind the post, its direction wobbling two degrees either
+  // way as a laser's noise and the robot's sway would make it.
+  const std::vector<double> ranges = scan_of([](double b) { return std::abs(b) <= 12 ? 1.0 : 8.0; });
+  VfhPlanner planner{VfhParameters{}};
+  std::optional<bool> left;
+  for (int cycle = 0; cycle < 40; ++cycle) {
+    const Steering s = planner.step(as_scan(ranges), cycle % 2 == 0 ? 88 : 92, kStep, 1.0);
+    ASSERT_TRUE(s.direction.has_value());
+    ASSERT_NE(*s.direction, 90.0) << "straight into the post";
+    if (!left) left = *s.direction > 90;
+    EXPECT_EQ(*s.direction > 90, *left) << "switched openings at cycle " << cycle;
+  }
 }
 
 TEST(VfhPlanner, ASpeedLimitCapsTheRamp) {
