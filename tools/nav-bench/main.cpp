@@ -49,13 +49,14 @@ int run(const bench::NavBenchOptions& options) {
   if (!options.trace.empty()) {
     trace.open(options.trace);
     if (!trace) throw std::runtime_error("cannot write the trace " + options.trace.string());
-    trace << "time,truth_x,truth_y,truth_yaw,estimate_x,estimate_y,estimate_yaw,speed,turn_rate,"
-             "vfh_goal_x,vfh_goal_y,vfh_goal_yaw,vfh_goal_active,stalled\n";
+    trace << "time,truth_x,truth_y,truth_yaw,estimate_x,estimate_y,estimate_yaw,odometry_x,odometry_y,odometry_yaw,"
+             "speed,turn_rate,vfh_goal_x,vfh_goal_y,vfh_goal_yaw,vfh_goal_active,stalled,vfh_phase\n";
     loop.set_step_observer([&trace](const bench::StepRecord& step) {
       trace << step.time << ',' << step.truth.x << ',' << step.truth.y << ',' << step.truth.yaw << ','
-            << step.estimate.x << ',' << step.estimate.y << ',' << step.estimate.yaw << ',' << step.speed << ','
-            << step.turn_rate << ',' << step.local_goal.x << ',' << step.local_goal.y << ',' << step.local_goal.yaw
-            << ',' << step.local_goal_active << ',' << step.stalled << '\n';
+            << step.estimate.x << ',' << step.estimate.y << ',' << step.estimate.yaw << ',' << step.odometry.x << ','
+            << step.odometry.y << ',' << step.odometry.yaw << ',' << step.speed << ',' << step.turn_rate << ','
+            << step.local_goal.x << ',' << step.local_goal.y << ',' << step.local_goal.yaw << ','
+            << step.local_goal_active << ',' << step.stalled << ',' << step.vfh_phase << '\n';
     });
   }
   const auto goals = bench::sample_goals(loop.reference_planner(), loop.true_pose(),

@@ -225,8 +225,9 @@ GoalOutcome NavigationLoop::drive_to(const geometry::Pose2& goal) {
 
     if (s.observer) {
       const std::optional<geometry::Pose2> local_goal = s.local.goal();
-      s.observer({s.world->time(), truth, s.localized(), motion.speed, motion.turn_rate,
-                  local_goal.value_or(geometry::Pose2{}), s.local.goal_active(), base.stalled});
+      s.observer({s.world->time(), truth, s.localized(), base.pose, motion.speed, motion.turn_rate,
+                  local_goal.value_or(geometry::Pose2{}), s.local.goal_active(), base.stalled,
+                  vfh::phase_name(s.local.phase())});
     }
     outcome.time_s = s.world->time() - started;
     if (s.global.goals_reached() != reached_before) {

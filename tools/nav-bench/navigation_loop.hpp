@@ -28,11 +28,13 @@ struct StepRecord {
   double time = 0.0;             // s, simulated
   geometry::Pose2 truth;
   geometry::Pose2 estimate;      // amcl's, map frame
+  geometry::Pose2 odometry;      // the base's, odometric frame (vfh steers by it)
   double speed = 0.0;            // commanded, m/s
   double turn_rate = 0.0;        // commanded, rad/s
   geometry::Pose2 local_goal;    // the waypoint vfh drives to, odometric frame
   bool local_goal_active = false;
   bool stalled = false;
+  const char* vfh_phase = "";    // what vfh did (vfh::phase_name)
 };
 
 class NavigationLoop {

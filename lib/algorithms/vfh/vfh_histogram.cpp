@@ -87,6 +87,17 @@ double RangeTable::nearest_around(double direction, double half_width) const {
   return nearest;
 }
 
+bool RangeTable::strip_clear(double direction, double length, double half_width) const {
+  for (std::size_t bin = 0; bin < metres_.size(); ++bin) {
+    const double range = metres_[bin];
+    if (range >= kNoReading) continue;
+    const double off_line = (static_cast<double>(bin) / 2.0 - direction) * std::numbers::pi / 180.0;
+    const double along = range * std::cos(off_line);
+    if (along > 0 && along < length && std::abs(range * std::sin(off_line)) < half_width) return false;
+  }
+  return true;
+}
+
 HistogramWindow::HistogramWindow(const VfhParameters& parameters)
     : parameters_(parameters), sectors_(360 / std::max(parameters.sector_angle, 1)) {
   validate(parameters_);

@@ -33,6 +33,9 @@ class RangeTable {
   [[nodiscard]] double at(double direction) const;
   // The nearest reading within `half_width` degrees of `direction`.
   [[nodiscard]] double nearest_around(double direction, double half_width) const;
+  // Whether no reading lies in the strip `half_width` either side of the
+  // line from the robot towards `direction` (degrees), up to `length` (m).
+  [[nodiscard]] bool strip_clear(double direction, double length, double half_width) const;
 
  private:
   std::vector<double> metres_;

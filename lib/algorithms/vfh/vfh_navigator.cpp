@@ -17,6 +17,19 @@ constexpr double kProgress = 0.25;  // m
 
 }  // namespace
 
+const char* phase_name(Phase phase) {
+  switch (phase) {
+    case Phase::idle: return "idle";
+    case Phase::velocity: return "velocity";
+    case Phase::backing_off: return "backing_off";
+    case Phase::turning_first: return "turning_first";
+    case Phase::steering: return "steering";
+    case Phase::escaping: return "escaping";
+    case Phase::aligning: return "aligning";
+  }
+  return "?";
+}
+
 VfhNavigator::VfhNavigator(const NavigatorSettings& settings) : settings_(settings), planner_(settings.planner) {
   if (!(settings.distance_epsilon > 0) || !(settings.angle_epsilon > 0)) {
     throw std::invalid_argument("vfh: distance_epsilon and angle_epsilon must be above 0");
@@ -28,7 +41,15 @@ VfhNavigator::VfhNavigator(const NavigatorSettings& settings) : settings_(settin
 
 void VfhNavigator::go_to(const geometry::Pose2& goal) {
   if (goal_ && goal_->x == goal.x && goal_->y == goal.y && goal_->yaw == goal.yaw) return;
+  // A global planner hands the same waypoint down again, a few centimetres
+  // off, each time its localization corrects the odometric frame. Starting
+  // over on each correction undid the turn to the goal's heading at every
+  // one: just outside distance_epsilon again, the robot turned back to face
+  // the point, and rocked there for half a minute and more.
+  const bool refined = mode_ == Mode::goal && goal_ &&
+                       std::hypot(goal.x - goal_->x, goal.y - goal_->y) < settings_.distance_epsilon;
   goal_ = goal;
+  if (refined) return;
   mode_ = Mode::goal;
   planner_.reset();
   backing_off_ = 0;
@@ -54,8 +75,10 @@ void VfhNavigator::stop() {
 Motion VfhNavigator::step(const geometry::Pose2& pose, const Scan& scan, double dt, bool stalled) {
   switch (mode_) {
     case Mode::idle:
+      phase_ = Phase::idle;
       return {};
     case Mode::velocity: {
+      phase_ = Phase::velocity;
       // Forward only as fast as the room ahead allows; the laser sees
       // nothing behind, so reversing is the client's own responsibility.
       double speed = commanded_speed_;
@@ -86,6 +109,7 @@ Motion VfhNavigator::turn_in_place(double heading_error) const {
 Motion VfhNavigator::towards_goal(const geometry::Pose2& pose, const Scan& scan, double dt, bool stalled) {
   const VfhParameters& p = settings_.planner;
   if (backing_off_ > 0) {
+    phase_ = Phase::backing_off;
     backing_off_ -= dt;
     if (backing_off_ <= 0) planner_.reset();
     return {.speed = -settings_.backoff_speed, .turn_rate = 0};
@@ -94,6 +118,7 @@ Motion VfhNavigator::towards_goal(const geometry::Pose2& pose, const Scan& scan,
     // Pushing against something the laser missed (too low, too dark):
     // back off a little and look again.
     ++stalls_;
+    phase_ = Phase::backing_off;
     backing_off_ = settings_.backoff_time;
     return {.speed = -settings_.backoff_speed, .turn_rate = 0};
   }
@@ -111,6 +136,7 @@ Motion VfhNavigator::towards_goal(const geometry::Pose2& pose, const Scan& scan,
     at_position_ = false;
   }
   if (at_position_) {
+    phase_ = Phase::aligning;
     if (std::abs(heading_error) < settings_.angle_epsilon) {
       mode_ = Mode::idle;
       return {.reached = true};
@@ -138,6 +164,7 @@ Motion VfhNavigator::towards_goal(const geometry::Pose2& pose, const Scan& scan,
   if (turning_first_) {
     planner_.reset();
     steering_ = false;
+    phase_ = Phase::turning_first;
     motion = turn_in_place(bearing_error);
   } else {
     steering_ = true;
@@ -145,8 +172,9 @@ Motion VfhNavigator::towards_goal(const geometry::Pose2& pose, const Scan& scan,
     // Arrive without circling: no faster than stops in the distance left, and
     // than turns on a circle of half of it (1.5 circled goals it never slowed for).
     const double limit = std::min(std::sqrt(2.0 * p.acceleration * distance), p.max_turn_rate * distance / 2.0);
-    const Steering steering = planner_.step(scan, desired, dt, limit);
+    const Steering steering = planner_.step(scan, desired, dt, limit, distance);
     escaping_ = steering.blocked;
+    phase_ = escaping_ ? Phase::escaping : Phase::steering;
     motion = {.speed = steering.speed, .turn_rate = steering.turn_rate};
   }
   // Turning round and round without getting nearer: spinning in a dead end,

@@ -26,6 +26,10 @@ struct NavigatorSettings {
   double backoff_time = 1.0;         // s
 };
 
+// What the navigator did in its last step (for traces and tests).
+enum class Phase { idle, velocity, backing_off, turning_first, steering, escaping, aligning };
+const char* phase_name(Phase phase);
+
 struct Motion {
   double speed = 0;      // m/s
   double turn_rate = 0;  // rad/s
@@ -40,6 +44,8 @@ class VfhNavigator {
 
   // Position mode. The same goal again is not a new goal (as in 1.5): a
   // client re-sending its command every cycle does not restart anything.
+  // Nor does a goal within distance_epsilon of the active one: that is the
+  // same goal, corrected; the robot carries on towards it as it was.
   void go_to(const geometry::Pose2& goal);
   // Velocity mode: forward speed, turn rate.
   void drive(double speed, double turn_rate);
@@ -52,6 +58,7 @@ class VfhNavigator {
 
   [[nodiscard]] bool goal_active() const { return mode_ == Mode::goal; }
   [[nodiscard]] std::optional<geometry::Pose2> goal() const { return goal_; }
+  [[nodiscard]] Phase phase() const { return phase_; }
   [[nodiscard]] std::uint64_t stuck_events() const { return stuck_events_; }
   [[nodiscard]] std::uint64_t stalls() const { return stalls_; }
 
@@ -63,6 +70,7 @@ class VfhNavigator {
   NavigatorSettings settings_;
   VfhPlanner planner_;
   Mode mode_ = Mode::idle;
+  Phase phase_ = Phase::idle;
   std::optional<geometry::Pose2> goal_;  // the last goal given, reached or not
   double commanded_speed_ = 0;
   double commanded_turn_ = 0;

@@ -74,6 +74,58 @@ TEST(VfhNavigator, OnceThereItKeepsTurningToTheHeadingThoughTheTurnCarriesItALit
   EXPECT_LT(m.turn_rate, 0.0) << "the point is to its right, behind";
 }
 
+TEST(VfhNavigator, AGoalCorrectedByAFewCentimetresDoesNotUndoTheTurnToItsHeading) {
+  Robot robot;
+  NavigatorSettings settings;
+  settings.distance_epsilon = 0.15;
+  VfhNavigator navigator{settings};
+  navigator.go_to({0.14, 0.0, radians(120)});  // there, facing away from the heading
+  Motion m = navigator.step(robot.pose, robot.scan(), kStep, false);
+  EXPECT_EQ(navigator.phase(), Phase::aligning);
+  EXPECT_GT(m.turn_rate, 0.0);
+  // A global planner's localization moves the goal 2 cm and a degree: now
+  // just beyond distance_epsilon, ahead. Started over, the robot would
+  // drive to the point again; corrected, it goes on turning to the heading.
+  navigator.go_to({0.16, 0.0, radians(121)});
+  m = navigator.step(robot.pose, robot.scan(), kStep, false);
+  EXPECT_EQ(navigator.phase(), Phase::aligning);
+  EXPECT_EQ(m.speed, 0.0);
+  EXPECT_GT(m.turn_rate, 0.0);
+  // A goal further off is a new goal.
+  navigator.go_to({2.0, 0.0, 0.0});
+  m = navigator.step(robot.pose, robot.scan(), kStep, false);
+  EXPECT_EQ(navigator.phase(), Phase::steering);
+}
+
+TEST(VfhNavigator, ReachesAGoalInAnAlcoveItsHistogramCallsBlocked) {
+  // Walls 1.1 m ahead, 0.8 m right and 0.9 m left, the goal 0.3 m ahead
+  // and a little left: hospital_section's goal (1.98, 1.08), which 1.5's
+  // VFH (and this one until 2026-12-08) turned in front of for ever.
+  Robot robot;
+  robot.ray = [](const geometry::Pose2& from, double angle) {
+    const double c = std::cos(angle);
+    const double s = std::sin(angle);
+    double free = 8.0;
+    if (c > 1e-9) free = std::min(free, (1.1 - from.x) / c);
+    if (s > 1e-9) free = std::min(free, (0.9 - from.y) / s);
+    if (s < -1e-9) free = std::min(free, (-0.8 - from.y) / s);
+    return free;
+  };
+  NavigatorSettings settings;
+  settings.distance_epsilon = 0.15;
+  settings.angle_epsilon = radians(5);
+  VfhNavigator navigator{settings};
+  navigator.go_to({0.28, 0.1, radians(-100)});
+  Motion m;
+  int steps = 0;
+  for (; steps < 600 && !m.reached && !m.stuck; ++steps) {
+    m = navigator.step(robot.pose, robot.scan(), kStep, false);
+    robot.move(m);
+  }
+  EXPECT_TRUE(m.reached) << "after " << steps << " steps at " << robot.pose.x << ", " << robot.pose.y;
+  EXPECT_LT(std::hypot(robot.pose.x - 0.28, robot.pose.y - 0.1), 0.15);
+}
+
 TEST(VfhNavigator, TurningFirstAndSteeringHandOverWithHysteresisNotAtOneAngle) {
   Robot robot;  // open space
   VfhNavigator navigator{NavigatorSettings{}};  // turn_first_angle 60 degrees

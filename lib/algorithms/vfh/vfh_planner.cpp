@@ -19,6 +19,11 @@ constexpr double kWideOpening = 80;       // degrees
 constexpr double kOpeningMargin = 40;     // degrees
 // 1.5 steered proportionally over 75 degrees either side of ahead.
 constexpr double kProportionalSpan = 75;  // degrees
+// A goal nearer than this, in a direction no more than kPlainViewAngle off
+// ahead (the laser sees the whole strip to it), is driven at straight when
+// the strip the robot sweeps to it is clear.
+constexpr double kPlainViewRange = 1.0;  // m
+constexpr double kPlainViewAngle = 60;   // degrees
 
 double radians(double degrees) { return degrees / kDegreesPerRadian; }
 
@@ -101,12 +106,20 @@ double VfhPlanner::turn_rate_towards(double direction) const {
   return std::clamp(radians(rate), -max_turn, max_turn);
 }
 
-Steering VfhPlanner::step(const Scan& scan, double desired, double dt, double speed_limit) {
+bool VfhPlanner::in_plain_view(const RangeTable& ranges, double desired, double goal_distance) const {
+  const VfhParameters& p = window_.parameters();
+  if (!(goal_distance <= kPlainViewRange) || angle_between(desired, 90) > kPlainViewAngle) return false;
+  // Up to where the robot's front would stand at the goal.
+  return ranges.strip_clear(desired, goal_distance + p.robot_radius, p.robot_radius + p.safety_distance);
+}
+
+Steering VfhPlanner::step(const Scan& scan, double desired, double dt, double speed_limit, double goal_distance) {
   const VfhParameters& p = window_.parameters();
   const RangeTable ranges(scan);
   const std::vector<bool> free = free_sectors(window_.read(ranges));
   Steering steering;
   steering.candidates = candidates(free, wrap_degrees(desired));
+  if (in_plain_view(ranges, wrap_degrees(desired), goal_distance)) steering.candidates = {wrap_degrees(desired)};
 
   double best_cost = 0;
   for (const double candidate : steering.candidates) {

@@ -9,8 +9,12 @@
 //  * with no way forward it turns in place towards the side with more room
 //    and keeps turning that way until a way opens (1.5 always spun left,
 //    forever);
-//  * the caller may ask for less speed near its goal (`speed_limit`).
+//  * the caller may ask for less speed near its goal (`speed_limit`);
+//  * a goal within a metre with nothing in the robot's way to it is driven
+//    at straight, though the histogram, which looks 1.5 m and more ahead,
+//    blocks its direction (1.5 could not reach a goal in an alcove).
 
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -34,8 +38,11 @@ class VfhPlanner {
 
   // `desired` is the goal's direction in degrees (90 straight ahead); `dt`
   // the seconds since the last step (for the speed ramp); `speed_limit`
-  // caps the speed (m/s), e.g. to arrive at a goal without overshooting.
-  Steering step(const Scan& scan, double desired, double dt, double speed_limit);
+  // caps the speed (m/s), e.g. to arrive at a goal without overshooting;
+  // `goal_distance` (m), when known, lets it drive straight at a near goal
+  // that nothing stands in front of.
+  Steering step(const Scan& scan, double desired, double dt, double speed_limit,
+                double goal_distance = std::numeric_limits<double>::infinity());
 
   // Forgets the ramp, the hysteresis and the previous direction (a new goal).
   void reset();
@@ -47,6 +54,7 @@ class VfhPlanner {
   [[nodiscard]] std::vector<bool> free_sectors(const HistogramWindow::Reading& reading);
   [[nodiscard]] std::vector<double> candidates(const std::vector<bool>& free, double desired) const;
   [[nodiscard]] double turn_rate_towards(double direction) const;
+  [[nodiscard]] bool in_plain_view(const RangeTable& ranges, double desired, double goal_distance) const;
 
   HistogramWindow window_;
   std::vector<bool> binary_;          // blocked sectors, with hysteresis

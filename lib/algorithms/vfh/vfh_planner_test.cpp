@@ -10,6 +10,7 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 namespace playerkit::vfh {
@@ -196,6 +197,71 @@ TEST(VfhPlanner, TurnsOneWayOutOfADeadEndAndKeepsTurningThatWay) {
   const Steering open = planner.step(as_scan(scan_of(kOpen)), 90, kStep, 1.0);
   EXPECT_FALSE(open.blocked);
   EXPECT_GT(open.speed, 0.0);
+}
+
+// Free distance from (x, y) along `angle` in an alcove 1.7 m wide (walls at
+// y = -0.8 m and y = +0.9 m) closed by a wall at x = 1.1 m: where the
+// hospital world's goal (1.98, 1.08) lies.
+double alcove(double x, double y, double angle) {
+  const double c = std::cos(angle);
+  const double s = std::sin(angle);
+  double free = 8.0;
+  if (c > 1e-9) free = std::min(free, (1.1 - x) / c);
+  if (s > 1e-9) free = std::min(free, (0.9 - y) / s);
+  if (s < -1e-9) free = std::min(free, (-0.8 - y) / s);
+  return free;
+}
+
+TEST(VfhPlanner, DrivesStraightAtANearGoalInAnAlcoveThoughTheHistogramBlocksIt) {
+  const MiniWorld world{.x = 0, .y = 0, .yaw = 0, .ray = alcove};
+  const std::vector<double> ranges = world.scan();
+  VfhPlanner planner{VfhParameters{}};
+  // Walls all round within 1.1 m: the histogram blocks every direction.
+  ASSERT_TRUE(planner.step(as_scan(ranges), 90, kStep, 1.0).blocked);
+  // A goal 0.3 m ahead, with nothing in the robot's way to it, is not.
+  planner.reset();
+  const Steering near = planner.step(as_scan(ranges), 90, kStep, 1.0, 0.3);
+  EXPECT_FALSE(near.blocked);
+  ASSERT_TRUE(near.direction.has_value());
+  EXPECT_EQ(*near.direction, 90.0);
+  EXPECT_GT(near.speed, 0.0);
+  // Nor one a little off to the side.
+  planner.reset();
+  const Steering aside = planner.step(as_scan(ranges), 110, kStep, 1.0, 0.3);
+  ASSERT_TRUE(aside.direction.has_value());
+  EXPECT_EQ(*aside.direction, 110.0);
+  EXPECT_GT(aside.turn_rate, 0.0);
+  // A goal whose reaching would put the robot's front into the wall is.
+  planner.reset();
+  EXPECT_TRUE(planner.step(as_scan(ranges), 90, kStep, 1.0, 0.9).blocked);
+}
+
+TEST(VfhPlanner, ANearGoalBehindAnObstacleIsNotDrivenAtStraight) {
+  // A post 0.4 m ahead, slightly right of the line to a goal 0.8 m ahead.
+  const MiniWorld world{.x = 0, .y = 0, .yaw = 0, .ray = [](double, double, double angle) {
+                          return std::abs(angle + 0.1) < 0.12 ? 0.4 : 8.0;
+                        }};
+  const std::vector<double> ranges = world.scan();
+  VfhPlanner planner{VfhParameters{}};
+  const Steering s = planner.step(as_scan(ranges), 90, kStep, 1.0, 0.8);
+  ASSERT_TRUE(s.direction.has_value());
+  EXPECT_NE(*s.direction, 90.0);
+}
+
+TEST(VfhPlanner, KeepsToOneOfTwoEqualOpeningsThoughTheGoalWobblesBetweenThem) {
+  // A post straight ahead 1 m off: an opening each side, mirror images; the
+  // goal right behind the post, its direction wobbling two degrees either
+  // way as a laser's noise and the robot's sway would make it.
+  const std::vector<double> ranges = scan_of([](double b) { return std::abs(b) <= 12 ? 1.0 : 8.0; });
+  VfhPlanner planner{VfhParameters{}};
+  std::optional<bool> left;
+  for (int cycle = 0; cycle < 40; ++cycle) {
+    const Steering s = planner.step(as_scan(ranges), cycle % 2 == 0 ? 88 : 92, kStep, 1.0);
+    ASSERT_TRUE(s.direction.has_value());
+    ASSERT_NE(*s.direction, 90.0) << "straight into the post";
+    if (!left) left = *s.direction > 90;
+    EXPECT_EQ(*s.direction > 90, *left) << "switched openings at cycle " << cycle;
+  }
 }
 
 TEST(VfhPlanner, ASpeedLimitCapsTheRamp) {
