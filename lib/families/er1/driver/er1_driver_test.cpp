@@ -217,6 +217,22 @@ TEST_F(Er1SilentControllerTest, AControllerThatNeverAnswersRefusesTheSubscriptio
   EXPECT_FALSE(devices.log.first_with({"no reply", "INIT"}).empty()) << devices.log.all();
 }
 
+struct Er1WakingTest : Er1DriverTest {
+  Er1WakingTest()
+      : Er1DriverTest({.tcp = false, .symlink = {}, .faults = fault([](emulators::FaultPlan& p) {
+                         p.slow_start = std::chrono::milliseconds(400);
+                       })}) {}
+};
+
+// A controller deaf and mute for 0.4 s each time the port opens (the kit's
+// slow-start): the INIT asked again is answered, and the robot drives.
+TEST_F(Er1WakingTest, AControllerSlowToWakeIsAskedAgainAndDrives) {
+  start();
+  drive(200, 0);
+  EXPECT_TRUE(data_when<protocol::PositionData>(position(), [](const auto& d) { return d.xpos > 50; }))
+      << devices.log.all();
+}
+
 struct Er1ReplugTest : Er1DriverTest {
   static LineOptions on_a_symlink() {
     static ::playerkit::testing::ScratchDirectory scratch("er1-replug");

@@ -47,6 +47,16 @@ TEST(NomadFaults, AServerThatSaysNothingRefusesTheSubscriptionWithinTheTimeout) 
       << robot.devices.log.all();
 }
 
+// A server deaf and mute for 0.5 s after each connection (the kit's
+// slow-start; robotd still starting): CONNECT_ROBOT asked again is answered.
+TEST(NomadFaults, AServerSlowToWakeIsAskedAgain) {
+  emulators::FaultPlan plan;
+  plan.slow_start = std::chrono::milliseconds(500);
+  Robot robot(plan);
+  ASSERT_TRUE(robot.nomad().subscribe()) << robot.devices.log.all();
+  EXPECT_TRUE(more_data(robot.nomad(), 3)) << robot.devices.log.all();
+}
+
 TEST(NomadFaults, AConnectionThatGoesDeadLosesTheRobotAndFindsItAgain) {
   emulators::FaultPlan plan;
   plan.vanish_at = std::chrono::seconds(1);

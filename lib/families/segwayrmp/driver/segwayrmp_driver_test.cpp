@@ -335,6 +335,7 @@ struct SegwayRmpNoisyTest : SegwayRmpDriverTest {
     emulators::FaultPlan plan;
     plan.garbage = 0.05;
     plan.truncate = 0.02;
+    plan.drop = 0.005;
     plan.bad_checksum = 0.1;  // slcan has none: left alone
     return plan;
   }
@@ -381,6 +382,22 @@ TEST_F(SegwayRmpSlowStartTest, AnAdapterThatNeverAnswersFailsWithinItsTimeout) {
   devices.load("position:0 ( driver \"segwayrmp\" canio \"slcan\" port \"$PORT\" )\n", robot.port());
   EXPECT_FALSE(position().subscribe());
   EXPECT_LT(std::chrono::steady_clock::now() - began, 5s);
+}
+
+struct SegwayRmpWakingTest : SegwayRmpDriverTest {
+  SegwayRmpWakingTest() : SegwayRmpDriverTest({.tcp = false, .symlink = {}, .faults = waking()}) {}
+  static emulators::FaultPlan waking() {
+    emulators::FaultPlan plan;
+    plan.slow_start = std::chrono::milliseconds(400);
+    return plan;
+  }
+};
+
+// An adapter deaf and mute for 0.4 s each time the port opens (the kit's
+// slow-start): the channel is asked for again, and the robot reports.
+TEST_F(SegwayRmpWakingTest, AnAdapterSlowToWakeIsAskedAgainAndTheRobotReports) {
+  start();
+  EXPECT_TRUE(more_data(position(), 3)) << devices.log.all();
 }
 
 }  // namespace segwayrmp_driver_test
