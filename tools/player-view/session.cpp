@@ -1,0 +1,130 @@
+#include "session.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "client/typed/laser.hpp"
+#include "client/typed/message_as.hpp"
+#include "client/typed/position.hpp"
+#include "client/typed/ranging.hpp"
+#include "protocol/errors.hpp"
+#include "protocol/interfaces.hpp"
+
+namespace playerkit::player_view {
+namespace {
+
+std::string device_lines(const std::vector<client::DeviceEntry>& entries) {
+  if (entries.empty()) return "  (no devices)\n";
+  std::string text;
+  for (const auto& entry : entries) {
+    text += "  " + protocol::to_string(entry.address) + " " +
+            (entry.driver_name.empty() ? std::string("(driver unknown)") : entry.driver_name) + "\n";
+  }
+  return text;
+}
+
+bool readable(const client::AccessGrant& grant) {
+  return grant.access == protocol::Access::kRead || grant.access == protocol::Access::kAll;
+}
+
+std::string refusal(protocol::DeviceAddress device, const client::AccessGrant& grant, const std::string& where) {
+  const std::string name = protocol::to_string(device);
+  if (grant.driver_name.empty()) return where + " has no device " + name;
+  return name + " (driver " + grant.driver_name + ") on " + where +
+         " could not be opened for reading: its driver failed to set up; the server's log says why";
+}
+
+// The reply to a one-byte request (the subtype), or nullopt when the device
+// does not answer it with an ACK in time.
+std::optional<protocol::Message> ask(client::Client& connection, protocol::DeviceAddress device,
+                                     std::uint8_t subtype) {
+  const std::vector<std::uint8_t> payload{subtype};
+  try {
+    auto reply = connection.request(device, payload);
+    if (reply.type() != protocol::MessageType::kAck) return std::nullopt;
+    return reply;
+  } catch (const client::TimeoutError&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+Session open_session(const ViewOptions& options, std::ostream& err) {
+  const auto timeout = std::chrono::milliseconds(static_cast<std::int64_t>(std::ceil(options.timeout * 1000.0)));
+  Session session{client::Client::connect(options.server.host, options.server.port, timeout), {}};
+  auto& connection = session.connection;
+  const std::string where = client::to_string(options.server);
+  try {
+    if (options.key) connection.authenticate(*options.key);
+    if (!options.devices.empty()) {
+      for (const auto device : options.devices) {
+        const auto grant = connection.request_access(device, protocol::Access::kRead);
+        if (!readable(grant)) {
+          throw ViewFailure(refusal(device, grant, where) + "\nthe server has:\n" +
+                            device_lines(connection.device_list()));
+        }
+        session.devices.push_back(device);
+      }
+      return session;
+    }
+    const auto entries = connection.device_list();
+    for (const auto& entry : entries) {
+      const auto grant = connection.request_access(entry.address, protocol::Access::kRead);
+      if (readable(grant)) {
+        session.devices.push_back(entry.address);
+      } else {
+        err << "player-view: skipping " << refusal(entry.address, grant, where) << "\n";
+      }
+    }
+    if (session.devices.empty()) {
+      throw ViewFailure(where + " has no device that opens for reading\nthe server has:\n" + device_lines(entries));
+    }
+  } catch (const client::TimeoutError&) {
+    throw;
+  } catch (const client::ClientError& e) {
+    // A server started with -k hangs up on a first message that is not its key.
+    if (options.key) throw;
+    throw ViewFailure(std::string(e.what()) + "; if the server was started with -k, pass --key");
+  }
+  return session;
+}
+
+void ask_geometry(Session& session, view::Scene& scene, std::chrono::milliseconds timeout) {
+  session.connection.set_timeout(timeout);
+  for (const auto device : session.devices) {
+    scene.add_device(device);
+    try {
+      switch (device.interface) {
+        case protocol::kLaserCode:
+          if (auto reply = ask(session.connection, device, protocol::kLaserGetGeom)) {
+            scene.set_laser_pose(device, client::to_si(client::reply_as<protocol::LaserGeom>(*reply)).pose);
+          }
+          break;
+        case protocol::kSonarCode:
+          if (auto reply = ask(session.connection, device, protocol::kSonarGetGeomReq)) {
+            scene.set_sensor_poses(device, client::to_si(client::reply_as<protocol::SonarGeom>(*reply)).poses);
+          }
+          break;
+        case protocol::kIrCode:
+          if (auto reply = ask(session.connection, device, protocol::kIrPoseReq)) {
+            scene.set_sensor_poses(device, client::to_si(client::reply_as<protocol::IrPoseRequest>(*reply)).poses);
+          }
+          break;
+        case protocol::kPositionCode:
+          if (auto reply = ask(session.connection, device, protocol::kPositionGetGeomReq)) {
+            const auto geometry = client::to_si(client::reply_as<protocol::PositionGeom>(*reply));
+            scene.set_robot_size(geometry.length, geometry.width);
+          }
+          break;
+        default:
+          break;
+      }
+    } catch (const client::MessageKindError&) {
+      // A reply of another shape: draw with the defaults.
+    } catch (const protocol::DecodeError&) {
+    }
+  }
+}
+
+}  // namespace playerkit::player_view
