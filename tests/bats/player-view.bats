@@ -89,3 +89,51 @@ start_simulator() {
   [ "$status" -eq 0 ]
   [[ "$output" == *"Exit status:"* ]]
 }
+
+# start_view LOG ARGS...: player-view ARGS... --http 0 in the background
+# (view_pid); waits for the line that says where the page is (view_port).
+start_view() {
+  local log="$1"
+  shift
+  : >"$log"
+  "$player_view" "$@" --http 0 2>"$log" &
+  view_pid=$!
+  wait_for_line --pid "$view_pid" "$log" 'serving http://127\.0\.0\.1:[0-9]+/' || return 1
+  view_port="$(sed -n 's|.*serving http://127\.0\.0\.1:\([0-9][0-9]*\)/.*|\1|p' "$log" | head -n 1)"
+}
+
+@test "the live page is served on loopback and its WebSocket carries the scene, with the map first" {
+  start_simulator
+  start_view "$BATS_TEST_TMPDIR/view.err" "127.0.0.1:$server_port" --map "$repo_root/data/worlds/cave.yaml"
+  run timeout 60 python3 "$repo_root/tests/bats/view_page.py" "$view_port" --map
+  echo "$output"
+  [ "$status" -eq 0 ]
+  [[ "$output" == *"map 500x500 at 0.03 m"* ]]
+  [[ "$output" == *"laser:0 "*" Hz"* ]]
+  [[ "$output" == *"truth:0 "*" Hz"* ]]
+  [[ "$output" == *"robot 2.0 2.0 0.785"* ]]
+  # A second page gets the map first too, from the same Player connection.
+  run timeout 60 python3 "$repo_root/tests/bats/view_page.py" "$view_port" --map
+  echo "$output"
+  [ "$status" -eq 0 ]
+  stop_cleanly "$view_pid"
+  ! grep -q warning "$BATS_TEST_TMPDIR/view.err"
+  stop_cleanly "$server_pid"
+}
+
+@test "an HTTP port in use is named, exit 1; --bind beyond loopback warns" {
+  start_simulator
+  start_view "$BATS_TEST_TMPDIR/view.err" "127.0.0.1:$server_port" laser:0
+  run --separate-stderr timeout 60 "$player_view" "127.0.0.1:$server_port" laser:0 --http "$view_port"
+  [ "$status" -eq 1 ]
+  [[ "$stderr" == *"player-view: cannot serve HTTP on 127.0.0.1:$view_port: Address already in use"* ]]
+  stop_cleanly "$view_pid"
+
+  : >"$BATS_TEST_TMPDIR/bind.err"
+  "$player_view" "127.0.0.1:$server_port" laser:0 --http 0 --bind 127.0.0.2 2>"$BATS_TEST_TMPDIR/bind.err" &
+  view_pid=$!
+  # Another loopback address: the warning is given for any address but the default.
+  wait_for_line --pid "$view_pid" "$BATS_TEST_TMPDIR/bind.err" 'warning: the page listens on 127\.0\.0\.2, not 127\.0\.0\.1'
+  stop_cleanly "$view_pid"
+  stop_cleanly "$server_pid"
+}

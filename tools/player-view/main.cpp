@@ -5,6 +5,7 @@
 #include <string>
 
 #include "parse_errors.hpp"
+#include "live.hpp"
 #include "pictures.hpp"
 #include "stop_signals.hpp"
 #include "view_options.hpp"
@@ -27,7 +28,15 @@ origin as Player 1.5's map driver placed it, or with its bottom-left corner at
 --origin X,Y: 0,0 for the bitmap of a Stage 1.3 world) or a ROS map_server
 .yaml, as amcl-offline takes them.
 
+The live page (--http): open http://127.0.0.1:PORT/ in a browser; it draws
+the same as the pictures, follows the robot (drag to pan, wheel to zoom) and
+shows each device's rate. Any number of pages share the tool's one connection
+to the server. The page is served on 127.0.0.1 only, unless --bind names
+another address (a warning says so: the page has no password).
+
 Examples:
+  player-view localhost:6665 --http 8080      then open http://127.0.0.1:8080/
+  player-view --http 8080 --map data/worlds/cave.yaml
   player-view localhost:6665 --snapshot robot.png
   player-view :7000 laser:0 position:0 --snapshot scan.png --after 3 --size 640x480 --span 20
   player-view --snapshot cave.png --map data/worlds/cave.yaml
@@ -35,18 +44,21 @@ Examples:
   player-view --record frames/ --every 0.5 --count 20    frames/frame-000001.png, ...
 
 Stdout: with --record, the name of each picture written, one a line.
-Messages go to stderr.
-Signals: SIGINT and SIGTERM write the snapshot at once, or end a recording; exit 0.
+Messages go to stderr, among them "serving http://127.0.0.1:PORT/".
+Signals: SIGINT and SIGTERM write the snapshot at once, end a recording, or
+stop serving; exit 0.
 Exit status: 0 done, 1 runtime error (cannot connect, a named device refused,
-connection lost, unreadable map, picture not writable), 2 usage error.)";
+connection lost, unreadable map, picture not writable, HTTP port taken),
+2 usage error.)";
 
 }  // namespace
 
 int main(int argc, char** argv) {
   namespace view = playerkit::player_view;
   CLI::App app{
-      "player-view [HOST[:PORT]] [DEVICE...] --snapshot FILE.png | --record DIR --every S:\n"
-      "connect to a Player server (by default localhost:6665) and draw what its robot sees."};
+      "player-view [HOST[:PORT]] [DEVICE...] --http PORT | --snapshot FILE.png | --record DIR --every S:\n"
+      "connect to a Player server (by default localhost:6665) and show what its robot sees,\n"
+      "live in a web browser or as pictures."};
   app.footer(kFooter);
   app.set_version_flag("--version", std::string("player-view (playerkit) ") + PLAYERKIT_VERSION);
 
@@ -54,6 +66,10 @@ int main(int argc, char** argv) {
   app.add_option("TARGETS", command_line.targets,
                  "the server if not localhost:6665, then devices: laser:0, position (index 0), 6:1")
       ->type_name("");
+  app.add_option("--http", command_line.http, "serve the live page on this port (0: a free one, printed)")
+      ->type_name("PORT");
+  app.add_option("--bind", command_line.bind, "with --http: the address to listen on (default 127.0.0.1)")
+      ->type_name("ADDR");
   app.add_option("--snapshot", command_line.snapshot, "write one PNG after --after seconds of data, then exit")
       ->type_name("FILE");
   app.add_option("--after", command_line.after, "seconds of data before the snapshot (default 1)")
@@ -95,5 +111,7 @@ int main(int argc, char** argv) {
   }
 
   playerkit::tools::install_stop_signals();
-  return view::run_pictures(options, std::cout, std::cerr, [] { return playerkit::tools::stop_requested(); });
+  const auto stop = [] { return playerkit::tools::stop_requested(); };
+  if (options.output == view::Output::kHttp) return view::run_live(options, std::cerr, stop);
+  return view::run_pictures(options, std::cout, std::cerr, stop);
 }

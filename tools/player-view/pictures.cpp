@@ -17,13 +17,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-Clock::duration seconds(double s) {
+Clock::duration picture_seconds(double s) {
   return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
 }
-
-// Geometry replies come quickly or not at all; a device that ignores them
-// must not hold the picture up for the whole --timeout each.
-constexpr auto kGeometryTimeout = std::chrono::milliseconds(1000);
 
 class Pictures {
  public:
@@ -61,11 +57,6 @@ class Pictures {
   Clock::time_point start_;
 };
 
-std::optional<grid::OccupancyGrid> load_map(const ViewOptions& options) {
-  if (!options.map) return std::nullopt;
-  return map::load_map(*options.map, options.map_loading);
-}
-
 void record(const ViewOptions& options, Pictures& pictures, std::ostream& out,
             const std::function<bool()>& stop_requested) {
   std::error_code error;
@@ -73,7 +64,7 @@ void record(const ViewOptions& options, Pictures& pictures, std::ostream& out,
   if (error) throw ViewFailure("cannot create " + options.record_dir.string() + ": " + error.message());
   auto next = pictures.start();
   for (std::uint64_t n = 1; !options.count || n <= *options.count; ++n) {
-    next += seconds(options.every);
+    next += picture_seconds(options.every);
     if (!pictures.collect_until(next, stop_requested)) return;
     const auto path = options.record_dir / record_file_name(n);
     pictures.write(path);
@@ -88,35 +79,19 @@ void record(const ViewOptions& options, Pictures& pictures, std::ostream& out,
 
 int run_pictures(const ViewOptions& options, std::ostream& out, std::ostream& err,
                  const std::function<bool()>& stop_requested) {
-  try {
+  return report_failures(options, err, [&] {
     // The map first: a bad map file is found before connecting.
-    auto map = load_map(options);
+    auto map = load_view_map(options);
     auto session = open_session(options, err);
     Pictures pictures(options, session, std::move(map));
-    const auto timeout = std::chrono::milliseconds(static_cast<std::int64_t>(std::ceil(options.timeout * 1000.0)));
-    ask_geometry(session, pictures.scene(), std::min(kGeometryTimeout, timeout));
+    ask_geometry(session, pictures.scene(), geometry_timeout(options));
     if (options.output == Output::kSnapshot) {
-      pictures.collect_until(pictures.start() + seconds(options.after), stop_requested);
+      pictures.collect_until(pictures.start() + picture_seconds(options.after), stop_requested);
       pictures.write(options.snapshot);
     } else {
       record(options, pictures, out, stop_requested);
     }
-    return kExitOk;
-  } catch (const ViewFailure& e) {
-    err << "player-view: " << e.what() << (std::string_view(e.what()).ends_with('\n') ? "" : "\n");
-  } catch (const client::ClientError& e) {
-    // Connection errors name the address; a lost connection's do not.
-    const std::string where = client::to_string(options.server);
-    const std::string what = e.what();
-    err << "player-view: " << (what.find(where) == std::string::npos ? where + ": " : "") << what << "\n";
-  } catch (const map::MapFileError& e) {
-    err << "player-view: " << e.what() << "\n";
-  } catch (const files::OutputError& e) {
-    err << "player-view: " << e.what() << "\n";
-  } catch (const std::exception& e) {
-    err << "player-view: " << e.what() << "\n";
-  }
-  return kExitFailure;
+  });
 }
 
 }  // namespace playerkit::player_view

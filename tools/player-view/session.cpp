@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "client/typed/laser.hpp"
+#include "map/map_file.hpp"
 #include "client/typed/message_as.hpp"
 #include "client/typed/position.hpp"
 #include "client/typed/ranging.hpp"
@@ -50,9 +51,23 @@ std::optional<protocol::Message> ask(client::Client& connection, protocol::Devic
 
 }  // namespace
 
+std::optional<grid::OccupancyGrid> load_view_map(const ViewOptions& options) {
+  if (!options.map) return std::nullopt;
+  return map::load_map(*options.map, options.map_loading);
+}
+
+std::chrono::milliseconds reply_timeout(const ViewOptions& options) {
+  return std::chrono::milliseconds(static_cast<std::int64_t>(std::ceil(options.timeout * 1000.0)));
+}
+
+std::chrono::milliseconds geometry_timeout(const ViewOptions& options) {
+  // Geometry replies come quickly or not at all; a device that ignores them
+  // must not hold the view up for the whole --timeout each.
+  return std::min(std::chrono::milliseconds(1000), reply_timeout(options));
+}
+
 Session open_session(const ViewOptions& options, std::ostream& err) {
-  const auto timeout = std::chrono::milliseconds(static_cast<std::int64_t>(std::ceil(options.timeout * 1000.0)));
-  Session session{client::Client::connect(options.server.host, options.server.port, timeout), {}};
+  Session session{client::Client::connect(options.server.host, options.server.port, reply_timeout(options)), {}};
   auto& connection = session.connection;
   const std::string where = client::to_string(options.server);
   try {
@@ -88,6 +103,24 @@ Session open_session(const ViewOptions& options, std::ostream& err) {
     throw ViewFailure(std::string(e.what()) + "; if the server was started with -k, pass --key");
   }
   return session;
+}
+
+int report_failures(const ViewOptions& options, std::ostream& err, const std::function<void()>& work) {
+  try {
+    work();
+    return kExitOk;
+  } catch (const ViewFailure& e) {
+    err << "player-view: " << e.what() << (std::string_view(e.what()).ends_with('\n') ? "" : "\n");
+  } catch (const client::ClientError& e) {
+    // Connection errors name the address; a lost connection's do not.
+    const std::string where = client::to_string(options.server);
+    const std::string what = e.what();
+    err << "player-view: " << (what.find(where) == std::string::npos ? where + ": " : "") << what << "\n";
+  } catch (const std::exception& e) {
+    // Map files, pictures, the HTTP port: their messages name the file or address.
+    err << "player-view: " << e.what() << "\n";
+  }
+  return kExitFailure;
 }
 
 void ask_geometry(Session& session, view::Scene& scene, std::chrono::milliseconds timeout) {

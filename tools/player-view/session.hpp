@@ -4,11 +4,14 @@
 // geometry the scene needs. Shared by pictures and (later) the live page.
 
 #include <chrono>
+#include <functional>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "algorithms/grid/occupancy_grid.hpp"
 #include "client/client.hpp"
 #include "view/scene.hpp"
 #include "view_options.hpp"
@@ -30,6 +33,17 @@ struct Session {
 // client::ClientError (unreachable, not a Player server). Devices found by
 // listing that refuse are skipped with a line on `err`.
 Session open_session(const ViewOptions& options, std::ostream& err);
+
+// The --map, if one was given. Throws map::MapFileError.
+std::optional<grid::OccupancyGrid> load_view_map(const ViewOptions& options);
+
+// --timeout, and the shorter wait for geometry replies.
+std::chrono::milliseconds reply_timeout(const ViewOptions& options);
+std::chrono::milliseconds geometry_timeout(const ViewOptions& options);
+
+// Runs `work`; returns kExitOk, or kExitFailure with "player-view: <what>"
+// on `err` for whatever it throws (a connection error names the server).
+int report_failures(const ViewOptions& options, std::ostream& err, const std::function<void()>& work);
 
 // Asks each device for what places its drawing on the robot (laser pose,
 // sonar and IR poses, the base's size); a device that does not answer is

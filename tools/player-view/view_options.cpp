@@ -85,12 +85,26 @@ void parse_map_flags(const CommandLine& command_line, ViewOptions& options) {
   }
 }
 
+void parse_http(const CommandLine& command_line, ViewOptions& options) {
+  if (command_line.after) throw UsageError("--after applies to --snapshot, not to the live page");
+  if (command_line.every || command_line.count) throw UsageError("--every and --count apply to --record, not to the live page");
+  options.output = Output::kHttp;
+  options.http_port = *command_line.http;
+  if (!command_line.bind.empty()) options.bind = command_line.bind;
+}
+
 void parse_output(const CommandLine& command_line, ViewOptions& options) {
   const bool snapshot = !command_line.snapshot.empty(), record = !command_line.record.empty();
-  if (snapshot == record) {
-    throw UsageError(snapshot ? "--snapshot and --record: choose one"
-                              : "say what to make: --snapshot FILE.png or --record DIR --every SECONDS");
+  const bool http = command_line.http.has_value();
+  if (int(snapshot) + int(record) + int(http) > 1) {
+    throw UsageError("--snapshot, --record and --http: choose one");
   }
+  if (!snapshot && !record && !http) {
+    throw UsageError(
+        "say what to make: --http PORT (a live page), --snapshot FILE.png or --record DIR --every SECONDS");
+  }
+  if (!command_line.bind.empty() && !http) throw UsageError("--bind sets the live page's address: it needs --http");
+  if (http) return parse_http(command_line, options);
   check_seconds(command_line.after, "--after", true);
   check_seconds(command_line.every, "--every", false);
   if (snapshot) {

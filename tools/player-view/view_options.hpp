@@ -36,11 +36,15 @@ struct CommandLine {
   std::optional<double> scale;
   bool negate = false;
   std::optional<std::string> origin;
+  std::optional<std::uint16_t> http;
+  std::string bind;
   std::optional<std::string> key;
   double timeout = 5.0;
 };
 
-enum class Output { kSnapshot, kRecord };
+enum class Output { kSnapshot, kRecord, kHttp };
+
+inline constexpr const char* kDefaultBind = "127.0.0.1";
 
 struct ViewOptions {
   client::ServerEndpoint server;
@@ -51,7 +55,9 @@ struct ViewOptions {
   std::filesystem::path record_dir;
   double every = 1.0;                  // s between recorded pictures
   std::optional<std::uint64_t> count;  // pictures to record; none: until a signal
-  view::RenderOptions render;
+  std::uint16_t http_port = 0;        // --http; 0: a free port, printed
+  std::string bind = kDefaultBind;     // --bind
+  view::RenderOptions render;  // pictures only
   std::optional<std::filesystem::path> map;
   map::MapLoadOptions map_loading;
   std::optional<std::string> key;
@@ -59,6 +65,8 @@ struct ViewOptions {
 };
 
 inline constexpr double kDefaultAfter = 1.0;
+// How often the live page gets a frame.
+inline constexpr double kPagesPerSecond = 10.0;
 
 // Throws UsageError.
 ViewOptions make_view_options(const CommandLine& command_line);

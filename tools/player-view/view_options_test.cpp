@@ -70,11 +70,28 @@ TEST(ViewOptions, Record) {
   EXPECT_EQ(record_file_name(1), "frame-000001.png");
 }
 
+TEST(ViewOptions, TheLivePageListensOnLoopbackByDefault) {
+  CommandLine command_line;
+  command_line.http = 8080;
+  auto options = make_view_options(command_line);
+  EXPECT_EQ(options.output, Output::kHttp);
+  EXPECT_EQ(options.http_port, 8080);
+  EXPECT_EQ(options.bind, "127.0.0.1");
+  command_line.bind = "0.0.0.0";
+  EXPECT_EQ(make_view_options(command_line).bind, "0.0.0.0");
+  command_line.after = 1.0;
+  EXPECT_EQ(usage_error(command_line), "--after applies to --snapshot, not to the live page");
+}
+
 TEST(ViewOptions, ErrorsNameTheFlag) {
-  EXPECT_EQ(usage_error(CommandLine{}), "say what to make: --snapshot FILE.png or --record DIR --every SECONDS");
+  EXPECT_EQ(usage_error(CommandLine{}),
+            "say what to make: --http PORT (a live page), --snapshot FILE.png or --record DIR --every SECONDS");
   auto both = snapshot_of({});
   both.record = "dir";
-  EXPECT_EQ(usage_error(both), "--snapshot and --record: choose one");
+  EXPECT_EQ(usage_error(both), "--snapshot, --record and --http: choose one");
+  auto bind = snapshot_of({});
+  bind.bind = "0.0.0.0";
+  EXPECT_EQ(usage_error(bind), "--bind sets the live page's address: it needs --http");
   CommandLine record;
   record.record = "dir";
   EXPECT_EQ(usage_error(record), "--record needs --every SECONDS between pictures");
