@@ -108,6 +108,7 @@ start_view() {
   run timeout 60 python3 "$repo_root/tests/bats/view_page.py" "$view_port" --map
   echo "$output"
   [ "$status" -eq 0 ]
+  [[ "$output" == *"drive off"* ]]
   [[ "$output" == *"map 500x500 at 0.03 m"* ]]
   [[ "$output" == *"laser:0 "*" Hz"* ]]
   [[ "$output" == *"truth:0 "*" Hz"* ]]
@@ -135,5 +136,24 @@ start_view() {
   # Another loopback address: the warning is given for any address but the default.
   wait_for_line --pid "$view_pid" "$BATS_TEST_TMPDIR/bind.err" 'warning: the page listens on 127\.0\.0\.2, not 127\.0\.0\.1'
   stop_cleanly "$view_pid"
+  stop_cleanly "$server_pid"
+}
+
+@test "--drive: the page drives the simulated robot, and a stop or a closed page stops it" {
+  start_simulator
+  start_view "$BATS_TEST_TMPDIR/view.err" "127.0.0.1:$server_port" --drive
+  run timeout 90 python3 "$repo_root/tests/bats/view_drive.py" "$view_port"
+  echo "$output"
+  [ "$status" -eq 0 ]
+  [[ "$output" == *"stopped after the page closed"* ]]
+  stop_cleanly "$view_pid"
+  stop_cleanly "$server_pid"
+}
+
+@test "--drive without a position device says so, exit 1" {
+  start_simulator
+  run --separate-stderr timeout 60 "$player_view" "127.0.0.1:$server_port" laser:0 --http 0 --drive
+  [ "$status" -eq 1 ]
+  [[ "$stderr" == *"--drive: no position device to drive on 127.0.0.1:$server_port"* ]]
   stop_cleanly "$server_pid"
 }

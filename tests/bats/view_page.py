@@ -3,7 +3,8 @@
 
   view_page.py PORT [--map]
       fetches http://127.0.0.1:PORT/ and /view.js, opens the WebSocket
-      /ws, reads the map first when --map is given, then frames until one
+      /ws, reads the hello (may the page drive?), the map when --map is
+      given, then frames until one
       has laser points (every wait bounded: 20 s in all). Prints the map's
       size, the legend's lines and the robot's pose; exit status 1 when
       something is missing.
@@ -80,6 +81,10 @@ def main():
     if not reply.startswith(b"HTTP/1.1 101"):
         fail(f"no WebSocket: {reply!r}")
 
+    hello = next_message(sock)
+    if hello.get("type") != "hello":
+        fail(f"the first message is not the hello: {hello.get('type')}")
+    print("drive", "allowed" if hello["drive"] else "off")
     if "--map" in sys.argv:
         message = next_message(sock)
         if message.get("type") != "map":

@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <optional>
 
+#include "client/typed/position.hpp"
+#include "drive.hpp"
 #include "page_server.hpp"
+#include "protocol/binary_codec.hpp"
 #include "session.hpp"
 #include "view/frame_json.hpp"
 #include "view/scene.hpp"
@@ -17,6 +21,61 @@ using LiveClock = std::chrono::steady_clock;
 // Only the default addresses go without a warning: whether another address
 // reaches beyond this machine depends on its network, which the tool cannot see.
 bool default_loopback(const std::string& address) { return address == "127.0.0.1" || address == "::1"; }
+
+std::string hello(const ViewOptions& options) {
+  char text[128];
+  std::snprintf(text, sizeof text, R"({"type":"hello","drive":%s,"speed":%.3f,"turn":%.4f})",
+                options.drive ? "true" : "false", options.speed, options.turn_rate);
+  return text;
+}
+
+// The base obeys the pages through a DriveControl, the one place the
+// dead-man rule lives.
+class Driver {
+ public:
+  Driver(client::Client& connection, protocol::DeviceAddress base, const ViewOptions& options)
+      : connection_(connection), base_(base), control_(options.speed, options.turn_rate) {}
+
+  void take(const std::vector<PageEvent>& events, double now) {
+    for (const auto& event : events) {
+      if (event.closed) {
+        control_.closed(event.page);
+      } else {
+        control_.message(event.page, event.text, now);
+      }
+    }
+  }
+
+  void update(double now) {
+    const bool starting = control_.starting();
+    const auto command = control_.update(now);
+    if (!command) return;
+    if (starting) {
+      // Motors on when driving starts, as playerjoy did; a base without the
+      // request still takes the command's own motor state.
+      const protocol::PositionPowerConfig power{protocol::kPositionMotorPowerReq, 1};
+      try {
+        (void)connection_.request(base_, protocol::encode(power));
+      } catch (const client::TimeoutError&) {
+      }
+    }
+    send(*command);
+  }
+
+  void stop() { send({}); }
+
+ private:
+  void send(const DriveCommand& command) {
+    client::PositionCommand wanted;
+    wanted.velocity = {command.forward, 0.0, command.turn};
+    wanted.motors_on = true;
+    connection_.write_command(base_, protocol::encode(client::to_wire(wanted)));
+  }
+
+  client::Client& connection_;
+  protocol::DeviceAddress base_;
+  DriveControl control_;
+};
 
 std::string url_host(const std::string& address) {
   return address.find(':') == std::string::npos ? address : "[" + address + "]";
@@ -32,7 +91,10 @@ int run_live(const ViewOptions& options, std::ostream& err, const std::function<
     auto session = open_session(options, err);
     view::Scene scene;
     ask_geometry(session, scene, geometry_timeout(options));
-    if (map) pages.set_greeting(view::map_json(*map));
+    std::optional<Driver> driver;
+    if (options.drive) driver.emplace(session.connection, open_base_for_driving(session, options), options);
+    pages.add_greeting(hello(options));
+    if (map) pages.add_greeting(view::map_json(*map));
     pages.start();
     err << "player-view: serving http://" << url_host(options.bind) << ":" << pages.port() << "/\n";
     if (!default_loopback(options.bind)) {
@@ -53,10 +115,18 @@ int run_live(const ViewOptions& options, std::ostream& err, const std::function<
         // After a stall, keep the pace rather than catching up in a burst.
         if (next <= now) next = now + period;
       }
+      const auto events = pages.take_events();
+      if (driver) {
+        driver->take(events, elapsed());
+        driver->update(elapsed());
+      }
+      // A key released on a page reaches the robot within 50 ms.
+      const auto longest = std::chrono::milliseconds(driver ? 50 : 100);
       const auto wait = std::clamp(std::chrono::ceil<std::chrono::milliseconds>(next - LiveClock::now()),
-                                   std::chrono::milliseconds(1), std::chrono::milliseconds(100));
+                                   std::chrono::milliseconds(1), longest);
       if (auto message = session.connection.read(wait)) scene.apply(*message, elapsed());
     }
+    if (driver) driver->stop();
   });
 }
 

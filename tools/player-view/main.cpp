@@ -34,9 +34,15 @@ shows each device's rate. Any number of pages share the tool's one connection
 to the server. The page is served on 127.0.0.1 only, unless --bind names
 another address (a warning says so: the page has no password).
 
+Driving (--drive): the arrow keys or the page's pad send velocity commands to
+the robot's first position device (motors switched on when driving starts).
+The robot stops when the key or pad is released, the page loses focus or
+closes, or the page falls silent for 0.6 s.
+
 Examples:
   player-view localhost:6665 --http 8080      then open http://127.0.0.1:8080/
   player-view --http 8080 --map data/worlds/cave.yaml
+  player-view --http 8080 --drive --speed 0.2 --turn 20
   player-view localhost:6665 --snapshot robot.png
   player-view :7000 laser:0 position:0 --snapshot scan.png --after 3 --size 640x480 --span 20
   player-view --snapshot cave.png --map data/worlds/cave.yaml
@@ -70,6 +76,14 @@ int main(int argc, char** argv) {
       ->type_name("PORT");
   app.add_option("--bind", command_line.bind, "with --http: the address to listen on (default 127.0.0.1)")
       ->type_name("ADDR");
+  app.add_flag("--drive", command_line.drive,
+               "with --http: arrow keys and the page's pad drive the robot (its first position device)");
+  app.add_option("--speed", command_line.speed, "with --drive: forward speed, m/s")
+      ->type_name("M/S")
+      ->capture_default_str();
+  app.add_option("--turn", command_line.turn, "with --drive: turn rate, degrees/s")
+      ->type_name("DEG/S")
+      ->capture_default_str();
   app.add_option("--snapshot", command_line.snapshot, "write one PNG after --after seconds of data, then exit")
       ->type_name("FILE");
   app.add_option("--after", command_line.after, "seconds of data before the snapshot (default 1)")

@@ -12,6 +12,7 @@
 #include <optional>
 #include <set>
 #include <thread>
+#include <utility>
 
 namespace playerkit::player_view {
 
@@ -34,7 +35,7 @@ using page_server_detail::PageSocket;
 using page_server_detail::Shared;
 
 // Everything below runs on the server's one thread, except publish() and
-// set_greeting(), which post their work to it. Connections hold a plain
+// add_greeting(), which post their work to it, and take_events(), under its mutex. Connections hold a plain
 // pointer to it: the destructor joins the thread first, and handlers still
 // queued die with the io_context.
 struct PageServer::Impl {
@@ -43,9 +44,18 @@ struct PageServer::Impl {
   std::vector<PageAsset> assets;
   std::thread thread;
   std::set<std::shared_ptr<PageSocket>> sockets;
-  Shared greeting;
+  std::vector<Shared> greetings;
   Shared latest;
   std::atomic<std::size_t> page_count{0};
+  std::uint64_t next_page = 1;
+  std::mutex events_mutex;
+  std::vector<PageEvent> events;
+
+  void note(PageEvent event) {
+    const std::lock_guard lock(events_mutex);
+    if (!event.closed && events.size() >= kMaxPageEvents) return;
+    events.push_back(std::move(event));
+  }
 
   void accept();
   void forget(const std::shared_ptr<PageSocket>& socket) {
@@ -61,7 +71,7 @@ namespace page_server_detail {
 class PageSocket : public std::enable_shared_from_this<PageSocket> {
  public:
   PageSocket(tcp::socket socket, PageServer::Impl* server)
-      : ws_(std::move(socket)), server_(std::move(server)) {}
+      : ws_(std::move(socket)), server_(server), id_(server->next_page++) {}
 
   void start(http::request<http::string_body> request) {
     ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
@@ -71,7 +81,7 @@ class PageSocket : public std::enable_shared_from_this<PageSocket> {
       auto& server = *self->server_;
       server.sockets.insert(self);
       server.page_count = server.sockets.size();
-      if (server.greeting) self->must_send_.push_back(server.greeting);
+      for (const auto& greeting : server.greetings) self->must_send_.push_back(greeting);
       if (server.latest) self->frame_ = server.latest;
       self->write_next();
       self->read();
@@ -104,10 +114,12 @@ class PageSocket : public std::enable_shared_from_this<PageSocket> {
     });
   }
 
-  // The page sends nothing yet (driving will); reading notices it closing.
+  // What the page sends (driving) goes to take_events(); reading also
+  // notices the page closing.
   void read() {
     ws_.async_read(incoming_, [self = shared_from_this()](beast::error_code error, std::size_t) {
       if (error) return self->close();
+      if (self->ws_.got_text()) self->server_->note({self->id_, false, beast::buffers_to_string(self->incoming_.data())});
       self->incoming_.consume(self->incoming_.size());
       self->read();
     });
@@ -116,6 +128,7 @@ class PageSocket : public std::enable_shared_from_this<PageSocket> {
   void close() {
     if (closed_) return;
     closed_ = true;
+    server_->note({id_, true, {}});
     server_->forget(shared_from_this());
   }
 
@@ -124,6 +137,7 @@ class PageSocket : public std::enable_shared_from_this<PageSocket> {
   std::deque<Shared> must_send_;
   Shared frame_;
   beast::flat_buffer incoming_;
+  std::uint64_t id_;
   bool writing_ = false;
   bool closed_ = false;
 };
@@ -231,10 +245,15 @@ void PageServer::start() {
   impl_->thread = std::thread([impl = impl_.get()] { impl->io.run(); });
 }
 
-void PageServer::set_greeting(std::string message) {
+void PageServer::add_greeting(std::string message) {
   asio::post(impl_->io, [impl = impl_.get(), message = std::make_shared<const std::string>(std::move(message))] {
-    impl->greeting = message;
+    impl->greetings.push_back(message);
   });
+}
+
+std::vector<PageEvent> PageServer::take_events() {
+  const std::lock_guard lock(impl_->events_mutex);
+  return std::exchange(impl_->events, {});
 }
 
 void PageServer::publish(std::string frame) {

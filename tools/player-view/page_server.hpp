@@ -28,6 +28,18 @@ struct PageAsset {
 // from tools/player-view/page/).
 const std::vector<PageAsset>& page_assets();
 
+// What a page said (a WebSocket text message) or that it closed.
+struct PageEvent {
+  std::uint64_t page = 0;  // numbered from 1 as pages open
+  bool closed = false;
+  std::string text;
+};
+
+// Page messages kept for take_events() at most; beyond, new messages are
+// dropped (closings never are), so a page sending without end cannot grow
+// the tool's memory.
+inline constexpr std::size_t kMaxPageEvents = 256;
+
 // The address is not an IP address, or the port cannot be listened on.
 class PageServerError : public std::runtime_error {
  public:
@@ -46,12 +58,15 @@ class PageServer {
   [[nodiscard]] std::uint16_t port() const;
   // Starts the server's thread.
   void start();
-  // The first message of every page from now on (the map), never dropped.
-  void set_greeting(std::string message);
+  // A first message of every page from now on (the map), never dropped;
+  // greetings go in the order they were added.
+  void add_greeting(std::string message);
   // The newest frame, for every page.
   void publish(std::string frame);
   // Pages open now.
   [[nodiscard]] std::size_t pages() const;
+  // The pages' messages and closings since the last call, oldest first.
+  std::vector<PageEvent> take_events();
 
   struct Impl;  // page_server.cpp's; public so its connection classes can name it
 

@@ -115,7 +115,7 @@ TEST(PageServer, ServesThePageAndAnswers404Otherwise) {
 
 TEST(PageServer, APageGetsTheGreetingThenTheNewestFrame) {
   PageServer server("127.0.0.1", 0, assets());
-  server.set_greeting("{\"type\":\"map\"}");
+  server.add_greeting("{\"type\":\"map\"}");
   server.publish("{\"frame\":1}");
   server.publish("{\"frame\":2}");
   server.start();
@@ -143,6 +143,44 @@ TEST(PageServer, EveryOpenPageGetsEachFrame) {
   server.publish("{\"frame\":7}");
   EXPECT_EQ(next_frame(first), "{\"frame\":7}");
   EXPECT_EQ(next_frame(second), "{\"frame\":7}");
+}
+
+// A masked text frame, as a browser sends it.
+std::string client_frame(const std::string& text) {
+  std::string frame{char(0x81), char(0x80 | text.size())};
+  const char mask[4] = {1, 2, 3, 4};
+  frame.append(mask, 4);
+  for (std::size_t i = 0; i < text.size(); ++i) frame += char(text[i] ^ mask[i % 4]);
+  return frame;
+}
+
+TEST(PageServer, WhatPagesSayAndTheirClosingAreEvents) {
+  PageServer server("127.0.0.1", 0, assets());
+  server.start();
+  {
+    Connection page(server.port());
+    open_websocket(page);
+    page.send(client_frame("{\"type\":\"stop\"}"));
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    std::vector<PageEvent> events;
+    while (events.empty() && std::chrono::steady_clock::now() < deadline) {
+      events = server.take_events();
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    ASSERT_EQ(events.size(), 1u);
+    EXPECT_EQ(events[0].page, 1u);
+    EXPECT_FALSE(events[0].closed);
+    EXPECT_EQ(events[0].text, "{\"type\":\"stop\"}");
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  std::vector<PageEvent> events;
+  while (events.empty() && std::chrono::steady_clock::now() < deadline) {
+    events = server.take_events();
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_TRUE(events[0].closed);
+  EXPECT_EQ(events[0].page, 1u);
 }
 
 TEST(PageServer, APortInUseIsNamedWithTheReason) {

@@ -105,6 +105,19 @@ Session open_session(const ViewOptions& options, std::ostream& err) {
   return session;
 }
 
+protocol::DeviceAddress open_base_for_driving(Session& session, const ViewOptions& options) {
+  const auto base = std::find_if(session.devices.begin(), session.devices.end(), [](protocol::DeviceAddress device) {
+    return device.interface == protocol::kPositionCode;
+  });
+  const std::string where = client::to_string(options.server);
+  if (base == session.devices.end()) throw ViewFailure("--drive: no position device to drive on " + where);
+  const auto grant = session.connection.request_access(*base, protocol::Access::kAll);
+  if (grant.access != protocol::Access::kAll) {
+    throw ViewFailure("--drive: " + protocol::to_string(*base) + " on " + where + " refused to be opened for writing");
+  }
+  return *base;
+}
+
 int report_failures(const ViewOptions& options, std::ostream& err, const std::function<void()>& work) {
   try {
     work();

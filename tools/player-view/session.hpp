@@ -45,6 +45,11 @@ std::chrono::milliseconds geometry_timeout(const ViewOptions& options);
 // on `err` for whatever it throws (a connection error names the server).
 int report_failures(const ViewOptions& options, std::ostream& err, const std::function<void()>& work);
 
+// --drive: the robot's first position device among the subscribed ones,
+// opened for writing too. Throws ViewFailure when there is none or the
+// server refuses.
+protocol::DeviceAddress open_base_for_driving(Session& session, const ViewOptions& options);
+
 // Asks each device for what places its drawing on the robot (laser pose,
 // sonar and IR poses, the base's size); a device that does not answer is
 // drawn with defaults.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <numbers>
 
 #include "protocol/interfaces.hpp"
 
@@ -90,6 +91,15 @@ void parse_http(const CommandLine& command_line, ViewOptions& options) {
   if (command_line.every || command_line.count) throw UsageError("--every and --count apply to --record, not to the live page");
   options.output = Output::kHttp;
   options.http_port = *command_line.http;
+  options.drive = command_line.drive;
+  if (!std::isfinite(command_line.speed) || command_line.speed <= 0.0 || command_line.speed > 10.0) {
+    throw UsageError("--speed must be more than 0 and at most 10 m/s");
+  }
+  if (!std::isfinite(command_line.turn) || command_line.turn <= 0.0 || command_line.turn > 360.0) {
+    throw UsageError("--turn must be more than 0 and at most 360 degrees/s");
+  }
+  options.speed = command_line.speed;
+  options.turn_rate = command_line.turn * std::numbers::pi / 180.0;
   if (!command_line.bind.empty()) options.bind = command_line.bind;
 }
 
@@ -104,6 +114,7 @@ void parse_output(const CommandLine& command_line, ViewOptions& options) {
         "say what to make: --http PORT (a live page), --snapshot FILE.png or --record DIR --every SECONDS");
   }
   if (!command_line.bind.empty() && !http) throw UsageError("--bind sets the live page's address: it needs --http");
+  if (command_line.drive && !http) throw UsageError("--drive lets the live page drive the robot: it needs --http");
   if (http) return parse_http(command_line, options);
   check_seconds(command_line.after, "--after", true);
   check_seconds(command_line.every, "--every", false);

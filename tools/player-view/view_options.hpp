@@ -38,6 +38,9 @@ struct CommandLine {
   std::optional<std::string> origin;
   std::optional<std::uint16_t> http;
   std::string bind;
+  bool drive = false;
+  double speed = 0.3;  // m/s
+  double turn = 30.0;  // degrees/s
   std::optional<std::string> key;
   double timeout = 5.0;
 };
@@ -57,6 +60,9 @@ struct ViewOptions {
   std::optional<std::uint64_t> count;  // pictures to record; none: until a signal
   std::uint16_t http_port = 0;        // --http; 0: a free port, printed
   std::string bind = kDefaultBind;     // --bind
+  bool drive = false;                  // the page may drive the robot
+  double speed = 0.3;                  // m/s, forward and back
+  double turn_rate = 0.5235987755982988;  // rad/s (30 degrees/s)
   view::RenderOptions render;  // pictures only
   std::optional<std::filesystem::path> map;
   map::MapLoadOptions map_loading;

@@ -79,8 +79,21 @@ TEST(ViewOptions, TheLivePageListensOnLoopbackByDefault) {
   EXPECT_EQ(options.bind, "127.0.0.1");
   command_line.bind = "0.0.0.0";
   EXPECT_EQ(make_view_options(command_line).bind, "0.0.0.0");
+  EXPECT_FALSE(make_view_options(command_line).drive);
+  command_line.drive = true;
+  command_line.turn = 90;
+  const auto driving = make_view_options(command_line);
+  EXPECT_TRUE(driving.drive);
+  EXPECT_DOUBLE_EQ(driving.speed, 0.3);
+  EXPECT_NEAR(driving.turn_rate, 1.5707963, 1e-6);
+  command_line.speed = 0;
+  EXPECT_EQ(usage_error(command_line), "--speed must be more than 0 and at most 10 m/s");
+  command_line.speed = 0.3;
   command_line.after = 1.0;
   EXPECT_EQ(usage_error(command_line), "--after applies to --snapshot, not to the live page");
+  auto snapshot = snapshot_of({});
+  snapshot.drive = true;
+  EXPECT_EQ(usage_error(snapshot), "--drive lets the live page drive the robot: it needs --http");
 }
 
 TEST(ViewOptions, ErrorsNameTheFlag) {

@@ -138,15 +138,87 @@ function takeMap(message) {
   wallContext.putImageData(walls, 0, 0);
 }
 
+// Driving (--drive): the dead-man rule starts here. A command is sent while
+// a key or button is held, renewed every 0.2 s (the tool stops a robot whose
+// page falls silent), and a stop when it is released or the page loses
+// focus; the tool stops the robot when this socket closes.
+let socket = null;
+let driveAllowed = false;
+const held = new Set();  // arrow keys held
+let padCommand = null;   // { x, yaw } while a pad button is held
+let renewal = null;
+
+const keyCommands = {
+  ArrowUp: { x: 1, yaw: 0 }, ArrowDown: { x: -1, yaw: 0 }, ArrowLeft: { x: 0, yaw: 1 }, ArrowRight: { x: 0, yaw: -1 },
+};
+
+function wantedCommand() {
+  if (padCommand) return padCommand;
+  let x = 0, yaw = 0;
+  for (const key of held) {
+    x += keyCommands[key].x;
+    yaw += keyCommands[key].yaw;
+  }
+  return { x: Math.sign(x), yaw: Math.sign(yaw) };
+}
+
+function send(message) {
+  if (socket && socket.readyState === WebSocket.OPEN) socket.send(JSON.stringify(message));
+}
+
+function driveNow() {
+  if (!driveAllowed) return;
+  const command = wantedCommand();
+  const moving = command.x !== 0 || command.yaw !== 0;
+  send(moving ? { type: "drive", x: command.x, yaw: command.yaw } : { type: "stop" });
+  document.getElementById("driving").textContent = moving ? `driving x ${command.x} yaw ${command.yaw}` : "stopped";
+  if (moving && !renewal) renewal = setInterval(driveNow, 200);
+  if (!moving && renewal) {
+    clearInterval(renewal);
+    renewal = null;
+  }
+}
+
+function stopDriving() {
+  held.clear();
+  padCommand = null;
+  driveNow();
+}
+
+window.addEventListener("keydown", (event) => {
+  if (!driveAllowed || !(event.key in keyCommands)) return;
+  event.preventDefault();
+  if (held.has(event.key)) return;  // the keyboard's own repeat
+  held.add(event.key);
+  driveNow();
+});
+window.addEventListener("keyup", (event) => {
+  if (!(event.key in keyCommands)) return;
+  held.delete(event.key);
+  driveNow();
+});
+window.addEventListener("blur", stopDriving);
+document.addEventListener("visibilitychange", () => { if (document.hidden) stopDriving(); });
+for (const button of document.querySelectorAll("#pad button")) {
+  button.addEventListener("pointerdown", () => {
+    padCommand = { x: Number(button.dataset.x), yaw: Number(button.dataset.yaw) };
+    driveNow();
+  });
+  for (const end of ["pointerup", "pointerleave", "pointercancel"]) button.addEventListener(end, stopDriving);
+}
+
 function connect() {
-  const socket = new WebSocket(`ws://${location.host}/ws`);
+  socket = new WebSocket(`ws://${location.host}/ws`);
   socket.onopen = () => {
     statusLine.textContent = "connected";
     statusLine.className = "";
   };
   socket.onmessage = (event) => {
     const message = JSON.parse(event.data);
-    if (message.type === "map") {
+    if (message.type === "hello") {
+      driveAllowed = message.drive;
+      document.getElementById("pad").style.display = driveAllowed ? "block" : "none";
+    } else if (message.type === "map") {
       takeMap(message);
     } else if (message.type === "frame") {
       frame = message;
@@ -155,6 +227,10 @@ function connect() {
     draw();
   };
   socket.onclose = () => {
+    if (renewal) clearInterval(renewal);
+    renewal = null;
+    held.clear();
+    padCommand = null;
     statusLine.textContent = `disconnected since ${new Date().toLocaleTimeString()}`;
     statusLine.className = "down";
     setTimeout(connect, 2000);
