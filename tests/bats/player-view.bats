@@ -157,3 +157,23 @@ start_view() {
   [[ "$stderr" == *"--drive: no position device to drive on 127.0.0.1:$server_port"* ]]
   stop_cleanly "$server_pid"
 }
+
+@test "the live page says when the robot's server is lost, and shows the robot again when it returns" {
+  start_simulator
+  local port="$server_port"
+  start_view "$BATS_TEST_TMPDIR/view.err" "127.0.0.1:$port" laser:0 truth:0
+  stop_cleanly "$server_pid"
+  wait_for_line --pid "$view_pid" "$BATS_TEST_TMPDIR/view.err" "lost 127\.0\.0\.1:$port .*reconnecting every second"
+  run timeout 60 python3 "$repo_root/tests/bats/view_page.py" "$view_port" --expect-lost
+  echo "$output"
+  [ "$status" -eq 0 ]
+  [[ "$output" == *"lost: the server closed the connection"* ]]
+  # The same port again: the tool finds the server where it was.
+  start_server "$BATS_TEST_TMPDIR/serve2.err" -s "$repo_root/data/worlds/simple.world" -p "$port"
+  run timeout 60 python3 "$repo_root/tests/bats/view_page.py" "$view_port"
+  echo "$output"
+  [ "$status" -eq 0 ]
+  [[ "$output" == *"laser:0 "* ]]
+  stop_cleanly "$view_pid"
+  stop_cleanly "$server_pid"
+}

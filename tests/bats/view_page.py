@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
 """A client of player-view's live page, on Python's standard library only:
 
-  view_page.py PORT [--map]
+  view_page.py PORT [--map] [--expect-lost]
       fetches http://127.0.0.1:PORT/ and /view.js, opens the WebSocket
       /ws, reads the hello (may the page drive?), the map when --map is
       given, then frames until one
-      has laser points (every wait bounded: 20 s in all). Prints the map's
+      has laser points (skipping "lost" messages: the tool is reconnecting),
+      or with --expect-lost the lost message instead (every wait bounded:
+      20 s in all). Prints the map's
       size, the legend's lines and the robot's pose; exit status 1 when
       something is missing.
 """
@@ -90,8 +92,16 @@ def main():
         if message.get("type") != "map":
             fail(f"the first message is not the map: {message.get('type')}")
         print(f"map {message['width']}x{message['height']} at {message['resolution']} m")
+    if "--expect-lost" in sys.argv:
+        message = next_message(sock)
+        if message.get("type") != "lost":
+            fail(f"not a lost message: {message.get('type')}")
+        print("lost:", message["why"])
+        return 0
     while time.monotonic() < DEADLINE:
         frame = next_message(sock)
+        if frame.get("type") == "lost":
+            continue  # the robot's server is not back yet
         if frame.get("type") != "frame":
             fail(f"not a frame: {frame.get('type')}")
         if any(len(dots["points"]) > 100 for dots in frame["dots"]):

@@ -4,6 +4,9 @@
 #include <chrono>
 #include <cstdio>
 #include <optional>
+#include <thread>
+
+#include <nlohmann/json.hpp>
 
 #include "client/typed/position.hpp"
 #include "drive.hpp"
@@ -81,6 +84,55 @@ std::string url_host(const std::string& address) {
   return address.find(':') == std::string::npos ? address : "[" + address + "]";
 }
 
+
+// One connection's life: feeds the pages until a stop request, or throws
+// client::ClientError when the connection is lost.
+void feed_pages(Session& session, PageServer& pages, const ViewOptions& options,
+                const std::function<bool()>& stop_requested) {
+  view::Scene scene;
+  ask_geometry(session, scene, geometry_timeout(options));
+  std::optional<Driver> driver;
+  if (options.drive) driver.emplace(session.connection, open_base_for_driving(session, options), options);
+  (void)pages.take_events();  // what pages asked while there was no robot is stale
+
+  const auto start = LiveClock::now();
+  const auto period =
+      std::chrono::duration_cast<LiveClock::duration>(std::chrono::duration<double>(1.0 / kPagesPerSecond));
+  auto next = start;
+  const auto elapsed = [&] { return std::chrono::duration<double>(LiveClock::now() - start).count(); };
+  while (!stop_requested()) {
+    const auto now = LiveClock::now();
+    if (now >= next) {
+      pages.publish(view::frame_json(scene.frame(elapsed())));
+      next += period;
+      // After a stall, keep the pace rather than catching up in a burst.
+      if (next <= now) next = now + period;
+    }
+    const auto events = pages.take_events();
+    if (driver) {
+      driver->take(events, elapsed());
+      driver->update(elapsed());
+    }
+    // A key released on a page reaches the robot within 50 ms.
+    const auto longest = std::chrono::milliseconds(driver ? 50 : 100);
+    const auto wait = std::clamp(std::chrono::ceil<std::chrono::milliseconds>(next - LiveClock::now()),
+                                 std::chrono::milliseconds(1), longest);
+    if (auto message = session.connection.read(wait)) scene.apply(*message, elapsed());
+  }
+  if (driver) driver->stop();
+}
+
+std::string lost_json(const std::string& why) {
+  const auto since = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+  return nlohmann::json{{"type", "lost"}, {"since", since}, {"why", why}}.dump();
+}
+
+// Sleeps up to `seconds`, waking for a stop request.
+void wait_a_while(double seconds, const std::function<bool()>& stop_requested) {
+  const auto until = LiveClock::now() + std::chrono::duration_cast<LiveClock::duration>(std::chrono::duration<double>(seconds));
+  while (!stop_requested() && LiveClock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+}
+
 }  // namespace
 
 int run_live(const ViewOptions& options, std::ostream& err, const std::function<bool()>& stop_requested) {
@@ -88,11 +140,10 @@ int run_live(const ViewOptions& options, std::ostream& err, const std::function<
     const auto map = load_view_map(options);
     // The port before the robot: a port in use is found without connecting.
     PageServer pages(options.bind, options.http_port, page_assets());
-    auto session = open_session(options, err);
-    view::Scene scene;
-    ask_geometry(session, scene, geometry_timeout(options));
-    std::optional<Driver> driver;
-    if (options.drive) driver.emplace(session.connection, open_base_for_driving(session, options), options);
+    // The first connection must work: an unreachable server or a refused
+    // device is an error, as for pictures.
+    auto session = std::make_optional(open_session(options, err));
+    if (options.drive) (void)open_base_for_driving(*session, options);
     pages.add_greeting(hello(options));
     if (map) pages.add_greeting(view::map_json(*map));
     pages.start();
@@ -103,30 +154,29 @@ int run_live(const ViewOptions& options, std::ostream& err, const std::function<
     }
     err << std::flush;
 
-    const auto start = LiveClock::now();
-    const auto period = std::chrono::duration_cast<LiveClock::duration>(std::chrono::duration<double>(1.0 / kPagesPerSecond));
-    auto next = start + period;
-    const auto elapsed = [&] { return std::chrono::duration<double>(LiveClock::now() - start).count(); };
-    while (!stop_requested()) {
-      const auto now = LiveClock::now();
-      if (now >= next) {
-        pages.publish(view::frame_json(scene.frame(elapsed())));
-        next += period;
-        // After a stall, keep the pace rather than catching up in a burst.
-        if (next <= now) next = now + period;
+    const std::string where = client::to_string(options.server);
+    while (true) {
+      try {
+        if (!session) session.emplace(open_session(options, err));
+        feed_pages(*session, pages, options, stop_requested);
+        return;
+      } catch (const client::ClientError& e) {
+        // Lost (or not back yet): the pages say so, and the tool tries again
+        // every second until the server returns.
+        if (session) {
+          err << "player-view: lost " << where << " (" << e.what() << "); reconnecting every second\n" << std::flush;
+          pages.publish(lost_json(e.what()));
+        }
+      } catch (const ViewFailure& e) {
+        if (session) {
+          err << "player-view: " << e.what() << "; trying again every second\n" << std::flush;
+          pages.publish(lost_json(e.what()));
+        }
       }
-      const auto events = pages.take_events();
-      if (driver) {
-        driver->take(events, elapsed());
-        driver->update(elapsed());
-      }
-      // A key released on a page reaches the robot within 50 ms.
-      const auto longest = std::chrono::milliseconds(driver ? 50 : 100);
-      const auto wait = std::clamp(std::chrono::ceil<std::chrono::milliseconds>(next - LiveClock::now()),
-                                   std::chrono::milliseconds(1), longest);
-      if (auto message = session.connection.read(wait)) scene.apply(*message, elapsed());
+      session.reset();
+      wait_a_while(1.0, stop_requested);
+      if (stop_requested()) return;
     }
-    if (driver) driver->stop();
   });
 }
 

@@ -33,6 +33,8 @@ the same as the pictures, follows the robot (drag to pan, wheel to zoom) and
 shows each device's rate. Any number of pages share the tool's one connection
 to the server. The page is served on 127.0.0.1 only, unless --bind names
 another address (a warning says so: the page has no password).
+When the robot's server goes away, the page says so and the tool reconnects
+every second; the first connection must work.
 
 Driving (--drive): the arrow keys or the page's pad send velocity commands to
 the robot's first position device (motors switched on when driving starts).
@@ -54,7 +56,8 @@ Messages go to stderr, among them "serving http://127.0.0.1:PORT/".
 Signals: SIGINT and SIGTERM write the snapshot at once, end a recording, or
 stop serving; exit 0.
 Exit status: 0 done, 1 runtime error (cannot connect, a named device refused,
-connection lost, unreadable map, picture not writable, HTTP port taken),
+connection lost (pictures), unreadable map, picture not writable, HTTP port
+taken, no position device for --drive),
 2 usage error.)";
 
 }  // namespace

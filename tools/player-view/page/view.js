@@ -221,8 +221,18 @@ function connect() {
     } else if (message.type === "map") {
       takeMap(message);
     } else if (message.type === "frame") {
+      if (statusLine.className === "down") {
+        statusLine.textContent = "connected";
+        statusLine.className = "";
+      }
       frame = message;
       showLegend();
+    } else if (message.type === "lost") {
+      // The tool lost the robot's server and is reconnecting; the last
+      // frame stays on the canvas.
+      const since = new Date(message.since * 1000).toLocaleTimeString();
+      statusLine.textContent = `robot disconnected since ${since}: ${message.why}`;
+      statusLine.className = "down";
     }
     draw();
   };
