@@ -32,6 +32,8 @@ class PageSocket;
 }  // namespace page_server_detail
 
 using page_server_detail::PageSocket;
+
+constexpr std::size_t kMaxPageMessageBytes = 4096;
 using page_server_detail::Shared;
 
 // Everything below runs on the server's one thread, except publish() and
@@ -76,6 +78,9 @@ class PageSocket : public std::enable_shared_from_this<PageSocket> {
   void start(http::request<http::string_body> request) {
     ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
     ws_.text(true);
+    // A page sends short drive messages; a larger one is refused (the socket
+    // closes) rather than buffered.
+    ws_.read_message_max(kMaxPageMessageBytes);
     ws_.async_accept(request, [self = shared_from_this()](beast::error_code error) {
       if (error) return;
       auto& server = *self->server_;

@@ -147,7 +147,12 @@ TEST(PageServer, EveryOpenPageGetsEachFrame) {
 
 // A masked text frame, as a browser sends it.
 std::string client_frame(const std::string& text) {
-  std::string frame{char(0x81), char(0x80 | text.size())};
+  std::string frame{char(0x81)};
+  if (text.size() < 126) {
+    frame += char(0x80 | text.size());
+  } else {
+    frame += {char(0x80 | 126), char(text.size() >> 8), char(text.size() & 0xff)};
+  }
   const char mask[4] = {1, 2, 3, 4};
   frame.append(mask, 4);
   for (std::size_t i = 0; i < text.size(); ++i) frame += char(text[i] ^ mask[i % 4]);
@@ -181,6 +186,22 @@ TEST(PageServer, WhatPagesSayAndTheirClosingAreEvents) {
   ASSERT_EQ(events.size(), 1u);
   EXPECT_TRUE(events[0].closed);
   EXPECT_EQ(events[0].page, 1u);
+}
+
+TEST(PageServer, APageSendingTooMuchIsClosed) {
+  PageServer server("127.0.0.1", 0, assets());
+  server.start();
+  Connection page(server.port());
+  open_websocket(page);
+  page.send(client_frame(std::string(5000, 'x')));
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  std::vector<PageEvent> events;
+  while (events.empty() && std::chrono::steady_clock::now() < deadline) {
+    events = server.take_events();
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_TRUE(events[0].closed);
 }
 
 TEST(PageServer, APortInUseIsNamedWithTheReason) {
