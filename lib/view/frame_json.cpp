@@ -76,6 +76,11 @@ std::string frame_json(const Frame& frame) {
                       {"colour", colour_text(body.colour)},
                       {"filled", body.filled}});
   }
+  json& labels = out["labels"] = json::array();
+  for (const auto& label : frame.labels) {
+    labels.push_back(
+        {{"at", {mm(label.at.x), mm(label.at.y)}}, {"text", label.text}, {"colour", colour_text(label.colour)}});
+  }
   json& legend = out["legend"] = json::array();
   for (const auto& entry : frame.legend) legend.push_back({{"text", entry.text}, {"colour", colour_text(entry.colour)}});
   return out.dump();

@@ -8,6 +8,7 @@
 //    "lines":[{"colour":..,"points":[...]}],"dots":[{"colour":..,"radius":1,"points":[...]}],
 //    "ellipses":[{"centre":[x,y],"a":..,"b":..,"angle":..,"colour":..}],
 //    "bodies":[{"pose":[x,y,yaw],"length":..,"width":..,"colour":..,"filled":true}],
+//    "labels":[{"at":[x,y],"text":"7","colour":..}],
 //    "legend":[{"text":"laser:0 5.0 Hz","colour":"#000000"}]}
 //   {"type":"map","width":W,"height":H,"resolution":r,"origin":[x,y],"cells":"<base64>"}
 //     cells: one byte a cell, rows from the lowest y: 0 free, 1 unknown, 2 occupied

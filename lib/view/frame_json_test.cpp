@@ -15,6 +15,7 @@ TEST(FrameJson, CarriesEveryShapeWithFlatPointsInMillimetres) {
   frame.ellipses.push_back({{1, 2}, 0.4, 0.2, 0.5, colours::kHypothesis});
   frame.bodies.push_back({{2, 2, 0.785398}, 0.44, 0.38, colours::kRobot, true});
   frame.legend.push_back({"laser:0 5.0 Hz", colours::kText});
+  frame.labels.push_back({{1.0, 2.0}, "7", colours::kFiducial});
   const auto json = nlohmann::json::parse(frame_json(frame));
   EXPECT_EQ(json["type"], "frame");
   EXPECT_EQ(json["centre"], nlohmann::json::parse("[1.235, -2.0]"));
@@ -27,6 +28,8 @@ TEST(FrameJson, CarriesEveryShapeWithFlatPointsInMillimetres) {
   EXPECT_EQ(json["bodies"][0]["filled"], true);
   EXPECT_EQ(json["legend"][0]["text"], "laser:0 5.0 Hz");
   EXPECT_TRUE(json["lines"].empty());
+  EXPECT_EQ(json["labels"][0]["text"], "7");
+  EXPECT_EQ(json["labels"][0]["at"], nlohmann::json::parse("[1.0, 2.0]"));
 }
 
 TEST(FrameJson, TheMapIsOneByteACellInBase64) {

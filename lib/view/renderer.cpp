@@ -210,6 +210,14 @@ RgbImage render(const Frame& frame, const grid::OccupancyGrid* map, const Render
   for (const auto& dots : frame.dots) painter.dots(dots);
   for (const auto& ellipse : frame.ellipses) painter.ellipse(ellipse);
   for (const auto& body : frame.bodies) painter.body(body);
+  for (const auto& label : frame.labels) {
+    const Point pixel = view.to_pixel(label.at);
+    // Beside the point, not on it: the marker stays visible.
+    if (std::abs(pixel.x) < 1.0e6 && std::abs(pixel.y) < 1.0e6) {
+      cv::putText(image, label.text, {static_cast<int>(pixel.x) + 6, static_cast<int>(pixel.y) - 6},
+                  cv::FONT_HERSHEY_SIMPLEX, 0.45, scalar(label.colour), 1, cv::LINE_AA);
+    }
+  }
   int row = 18;
   for (const auto& entry : frame.legend) {
     draw_text_box(image, entry.text, {8, row}, entry.colour);

@@ -2,8 +2,8 @@
 // A Frame drawn into an RGB picture, north up, centred on frame.centre:
 // the map under everything (free white, occupied black, unknown grey; a
 // 1 m grid on white without a map), then areas, the map's walls again (so
-// cones and fans never hide them), trails, dots, ellipses, bodies, the
-// legend at the top left and a scale bar at the bottom left.
+// cones and fans never hide them), trails, dots, ellipses, bodies, labels
+// (fiducial ids), the legend at the top left and a scale bar at the bottom left.
 // OpenCV stays inside renderer.cpp.
 
 #include <cstdint>

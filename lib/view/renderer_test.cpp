@@ -84,6 +84,26 @@ TEST(Renderer, DrawsAScansPoints) {
   EXPECT_NE(image.at(90, 90), colours::kLaserPoint);
 }
 
+TEST(Renderer, WritesLabelsBesideTheirPoint) {
+  Frame frame = empty_frame({0.0, 0.0});
+  frame.labels.push_back({{0.0, 0.0}, "42", colours::kFiducial});
+  const RgbImage image = render(frame, nullptr, small());
+  // The text starts 6 pixels right of (100, 100) and sits on the row 6 above.
+  const auto teal = [&](int col, int row) {
+    const Colour c = image.at(col, row);
+    return c.g > c.r + 40 && c.b > c.r + 40;
+  };
+  int beside = 0, elsewhere = 0;
+  for (int row = 0; row < 200; ++row) {
+    for (int col = 0; col < 200; ++col) {
+      if (!teal(col, row)) continue;
+      (row >= 82 && row < 96 && col >= 104 && col < 125 ? beside : elsewhere) += 1;
+    }
+  }
+  EXPECT_GT(beside, 15);
+  EXPECT_EQ(elsewhere, 0);
+}
+
 TEST(Renderer, FillsAreas) {
   Frame frame = empty_frame({0.0, 0.0});
   frame.areas.push_back({{{0.0, 0.0}, {0.8, 0.0}, {0.8, 0.8}}, colours::kLaserFan});

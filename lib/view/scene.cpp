@@ -67,7 +67,7 @@ Pose2D invert(const Pose2D& a) {
 
 void Scene::add_device(protocol::DeviceAddress device) { devices_.try_emplace(device); }
 
-void Scene::set_laser_pose(protocol::DeviceAddress laser, const Pose2D& pose) { laser_poses_[laser] = pose; }
+void Scene::set_mount_pose(protocol::DeviceAddress device, const Pose2D& pose) { mount_poses_[device] = pose; }
 
 void Scene::set_sensor_poses(protocol::DeviceAddress device, std::vector<Pose2D> poses) {
   sensor_poses_[device] = std::move(poses);
@@ -99,6 +99,9 @@ bool Scene::apply(const protocol::Message& message, double now) {
         break;
       case protocol::kIrCode:
         state.ranges = client::to_si(client::data_as<protocol::IrData>(message)).ranges;
+        break;
+      case protocol::kFiducialCode:
+        state.fiducials = client::to_si(client::data_as<protocol::FiducialData>(message));
         break;
       case protocol::kLocalizeCode:
         state.estimate = client::to_si(client::data_as<protocol::LocalizeData>(message));
@@ -167,8 +170,8 @@ Frame Scene::frame(double now) const {
 void Scene::add_sensor_shapes(protocol::DeviceAddress device, const DeviceState& state, const Pose2D& robot,
                               Frame& frame) const {
   if (state.scan) {
-    const auto found = laser_poses_.find(device);
-    const Pose2D sensor = compose(robot, found == laser_poses_.end() ? Pose2D{} : found->second);
+    const auto found = mount_poses_.find(device);
+    const Pose2D sensor = compose(robot, found == mount_poses_.end() ? Pose2D{} : found->second);
     const auto& scan = *state.scan;
     Area fan{{point_of(sensor)}, colours::kLaserFan};
     Dots plain{{}, colours::kLaserPoint, 1};
@@ -192,6 +195,17 @@ void Scene::add_sensor_shapes(protocol::DeviceAddress device, const DeviceState&
       for (std::size_t i = 0; i < state.ranges.size() && i < poses->second.size(); ++i) {
         frame.areas.push_back(cone(compose(robot, poses->second[i]), state.ranges[i], half_angle, fill));
       }
+    }
+  }
+  if (!state.fiducials.empty()) {
+    const auto found = mount_poses_.find(device);
+    const Pose2D detector = compose(robot, found == mount_poses_.end() ? Pose2D{} : found->second);
+    for (const auto& fiducial : state.fiducials) {
+      const Point at = along(detector, fiducial.bearing, fiducial.range);
+      const Pose2D marker{at.x, at.y, detector.yaw + fiducial.bearing + fiducial.orientation};
+      frame.bodies.push_back(
+          {marker, options_.fiducial_size, options_.fiducial_size, colours::kFiducial, false});
+      frame.labels.push_back({at, fiducial.id < 0 ? std::string("?") : std::to_string(fiducial.id), colours::kFiducial});
     }
   }
   if (state.estimate) {

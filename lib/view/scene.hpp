@@ -21,6 +21,7 @@
 #include <optional>
 #include <vector>
 
+#include "client/typed/fiducial.hpp"
 #include "client/typed/laser.hpp"
 #include "client/typed/localize.hpp"
 #include "client/typed/pose.hpp"
@@ -38,6 +39,7 @@ struct SceneOptions {
   double ir_half_angle = 0.0436;       // rad (2.5 degrees)
   double ellipse_sigmas = 2.0;         // a hypothesis ellipse spans this many standard deviations
   double min_ellipse_axis = 0.05;      // m, so a confident estimate stays visible
+  double fiducial_size = 0.2;          // m, the box a fiducial is drawn as
 };
 
 // A Pioneer 2-DX, until the position device's geometry says otherwise.
@@ -50,8 +52,9 @@ class Scene {
 
   // A device to list in the legend, with its rate, before any data came.
   void add_device(protocol::DeviceAddress device);
-  // Where a laser sits on the robot (its get-geom reply); default the centre.
-  void set_laser_pose(protocol::DeviceAddress laser, const client::Pose2D& pose);
+  // Where a laser or a fiducial detector sits on the robot (its get-geom
+  // reply); default the robot's centre.
+  void set_mount_pose(protocol::DeviceAddress device, const client::Pose2D& pose);
   // Sonar or IR transducer poses on the robot; without them no cones are drawn.
   void set_sensor_poses(protocol::DeviceAddress device, std::vector<client::Pose2D> poses);
   void set_robot_size(double length, double width);
@@ -71,6 +74,7 @@ class Scene {
     std::optional<client::LaserScan> scan;
     std::vector<double> ranges;  // sonar, IR
     std::optional<client::LocalizeEstimate> estimate;
+    std::vector<client::Fiducial> fiducials;
   };
 
   void apply_position(protocol::DeviceAddress device, const protocol::Message& message);
@@ -80,7 +84,7 @@ class Scene {
 
   SceneOptions options_;
   std::map<protocol::DeviceAddress, DeviceState> devices_;
-  std::map<protocol::DeviceAddress, client::Pose2D> laser_poses_;
+  std::map<protocol::DeviceAddress, client::Pose2D> mount_poses_;
   std::map<protocol::DeviceAddress, std::vector<client::Pose2D>> sensor_poses_;
   double robot_length_ = kDefaultRobotLength;
   double robot_width_ = kDefaultRobotWidth;

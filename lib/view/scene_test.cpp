@@ -99,7 +99,7 @@ TEST(Scene, LaserPointsHangOffTheRobotPose) {
 
 TEST(Scene, TheLaserPoseOnTheRobotMovesItsPoints) {
   Scene scene;
-  scene.set_laser_pose(kLaser, {0.5, 0.0, 0.0});
+  scene.set_mount_pose(kLaser, {0.5, 0.0, 0.0});
   scene.apply(three_beam_scan(), 0.0);
   const Frame frame = scene.frame(0.0);
   expect_near(frame.dots[1].points[0], 2.5, 0.0);
@@ -174,6 +174,29 @@ TEST(Scene, LocalizeHypothesesBecomeEllipsesAndTheBestPlacesTheRobot) {
   EXPECT_NEAR(frame.ellipses[0].angle, 0.0, 1e-9);
   // A point estimate stays visible.
   EXPECT_DOUBLE_EQ(frame.ellipses[1].semi_major, SceneOptions{}.min_ellipse_axis);
+}
+
+TEST(Scene, FiducialsAreBoxesWithTheirIds) {
+  Scene scene;
+  constexpr DeviceAddress kFiducial{protocol::kFiducialCode, 0};
+  scene.set_mount_pose(kFiducial, {0.1, 0.0, 0.0});
+  protocol::FiducialData seen;
+  seen.count = 2;
+  seen.fiducials[0].id = 7;
+  seen.fiducials[0].pose = {2000, 90, 0};  // 2 m at 90 degrees
+  seen.fiducials[1].id = -1;
+  seen.fiducials[1].pose = {1000, 0, 0};
+  scene.apply(data(kFiducial, seen), 0.0);
+  const Frame frame = scene.frame(0.0);
+  ASSERT_EQ(frame.labels.size(), 2u);
+  expect_near(frame.labels[0].at, 0.1, 2.0);
+  EXPECT_EQ(frame.labels[0].text, "7");
+  EXPECT_EQ(frame.labels[1].text, "?");
+  expect_near(frame.labels[1].at, 1.1, 0.0);
+  ASSERT_EQ(frame.bodies.size(), 3u);  // two fiducials, then the robot
+  EXPECT_FALSE(frame.bodies[0].filled);
+  EXPECT_EQ(frame.bodies[0].colour, colours::kFiducial);
+  EXPECT_NEAR(frame.bodies[0].pose.yaw, std::numbers::pi / 2, 1e-9);
 }
 
 TEST(Scene, TheLegendListsEveryDeviceWithItsRate) {

@@ -49,12 +49,20 @@ struct Ellipse {
   Colour colour;
 };
 
-// The robot (filled) or its true pose (outline): a box with a heading line.
+// The robot (filled), its true pose or a fiducial (outlines): a box with a
+// heading line.
 struct Body {
   client::Pose2D pose;
   double length = 0, width = 0;  // m
   Colour colour;
   bool filled = true;
+};
+
+// A fiducial's id beside it; the size is the font's, in pixels.
+struct Label {
+  Point at;
+  std::string text;
+  Colour colour;
 };
 
 struct LegendEntry {
@@ -69,6 +77,7 @@ struct Frame {
   std::vector<Dots> dots;
   std::vector<Ellipse> ellipses;
   std::vector<Body> bodies;
+  std::vector<Label> labels;
   std::vector<LegendEntry> legend;
 };
 
@@ -83,6 +92,7 @@ inline constexpr Colour kTrail{120, 120, 0};
 inline constexpr Colour kRobot{220, 30, 30};
 inline constexpr Colour kTruth{0, 160, 0};
 inline constexpr Colour kHypothesis{160, 0, 200};
+inline constexpr Colour kFiducial{0, 130, 130};
 inline constexpr Colour kText{0, 0, 0};
 }  // namespace colours
 

@@ -15,7 +15,7 @@ namespace {
 constexpr const char* kFooter = R"(What is drawn, top-down, north up, the robot at the centre:
   the map (--map), laser scans (points, the free-space fan, bright returns in
   orange), sonar and IR cones, the odometry trail, localize hypotheses as
-  ellipses, the true pose in a simulator (green outline), the robot (red), a
+  ellipses, fiducials with their ids, the true pose in a simulator (green outline), the robot (red), a
   legend with each device's rate ("laser:0 5.0 Hz") and a scale bar. The robot
   is placed by truth when the server has it, else by the best localize
   hypothesis, else by odometry.

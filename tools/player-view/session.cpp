@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "client/typed/fiducial.hpp"
 #include "client/typed/laser.hpp"
 #include "map/map_file.hpp"
 #include "client/typed/message_as.hpp"
@@ -144,7 +145,12 @@ void ask_geometry(Session& session, view::Scene& scene, std::chrono::millisecond
       switch (device.interface) {
         case protocol::kLaserCode:
           if (auto reply = ask(session.connection, device, protocol::kLaserGetGeom)) {
-            scene.set_laser_pose(device, client::to_si(client::reply_as<protocol::LaserGeom>(*reply)).pose);
+            scene.set_mount_pose(device, client::to_si(client::reply_as<protocol::LaserGeom>(*reply)).pose);
+          }
+          break;
+        case protocol::kFiducialCode:
+          if (auto reply = ask(session.connection, device, protocol::kFiducialGetGeom)) {
+            scene.set_mount_pose(device, client::to_si(client::reply_as<protocol::FiducialGeom>(*reply)).pose);
           }
           break;
         case protocol::kSonarCode:

@@ -98,6 +98,12 @@ function draw() {
     context.stroke();
   }
   for (const body of frame.bodies) drawBody(body);
+  context.font = "13px sans-serif";
+  for (const label of frame.labels ?? []) {
+    const [px, py] = toPixel(label.at[0], label.at[1]);
+    context.fillStyle = label.colour;
+    context.fillText(label.text, px + 6, py - 6);  // beside the marker, as the pictures put it
+  }
 }
 
 function showLegend() {
