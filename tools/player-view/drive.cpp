@@ -26,6 +26,12 @@ void DriveControl::message(std::uint64_t page, std::string_view text, double now
     stop();
     return;
   }
+  if (type == "motors") {
+    if (!json.contains("on") || !json["on"].is_boolean()) return;
+    motor_request_ = json["on"].get<bool>();
+    if (!*motor_request_) stop();
+    return;
+  }
   if (type != "drive") return;
   const DriveCommand command{speed_ * unit(json.value("x", nlohmann::json())),
                              turn_rate_ * unit(json.value("yaw", nlohmann::json()))};

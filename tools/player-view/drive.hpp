@@ -7,11 +7,13 @@
 // {"type":"stop"} when it is released or the page loses focus. The robot
 // stops when the page driving it says stop, closes, or falls silent for
 // `hold` seconds (a frozen tab, a lost network): it never keeps going on a
-// message that is not renewed.
+// message that is not renewed. {"type":"motors","on":true|false} (the
+// page's buttons) asks for the motors' power; switching them off stops too.
 
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <utility>
 
 namespace playerkit::player_view {
 
@@ -35,6 +37,8 @@ class DriveControl {
   // Whether the next command sent is the first since the robot stood still
   // (the caller switches the motors on then).
   [[nodiscard]] bool starting() const { return sent_ == DriveCommand{}; }
+  // The motor power a page asked for since the last call, if any.
+  std::optional<bool> take_motor_request() { return std::exchange(motor_request_, std::nullopt); }
 
  private:
   void stop() { wanted_ = {}; driver_.reset(); }
@@ -44,6 +48,7 @@ class DriveControl {
   double last_heard_ = 0;
   DriveCommand wanted_;
   DriveCommand sent_;
+  std::optional<bool> motor_request_;
 };
 
 }  // namespace playerkit::player_view

@@ -53,6 +53,21 @@ TEST(DriveControl, TheNewestPageDrivesAndAnyPageMayStop) {
   EXPECT_EQ(drive.update(0.3), DriveCommand{});
 }
 
+TEST(DriveControl, MotorButtonsAskForPowerAndOffStops) {
+  DriveControl drive(0.3, 0.5);
+  EXPECT_FALSE(drive.take_motor_request());
+  drive.message(1, R"({"type":"motors","on":true})", 0.0);
+  EXPECT_EQ(drive.take_motor_request(), true);
+  EXPECT_FALSE(drive.take_motor_request());
+  drive.message(1, kForward, 0.1);
+  ASSERT_TRUE(drive.update(0.1));
+  drive.message(2, R"({"type":"motors","on":false})", 0.2);
+  EXPECT_EQ(drive.take_motor_request(), false);
+  EXPECT_EQ(drive.update(0.2), DriveCommand{});
+  drive.message(1, R"({"type":"motors","on":"yes"})", 0.3);
+  EXPECT_FALSE(drive.take_motor_request());
+}
+
 TEST(DriveControl, OddMessagesAreIgnoredAndSpeedsClamped) {
   DriveControl drive(0.3, 0.5);
   drive.message(1, "not json", 0.0);

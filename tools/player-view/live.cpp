@@ -50,24 +50,33 @@ class Driver {
   }
 
   void update(double now) {
+    const auto motors = control_.take_motor_request();
     const bool starting = control_.starting();
     const auto command = control_.update(now);
-    if (!command) return;
-    if (starting) {
-      // Motors on when driving starts, as playerjoy did; a base without the
-      // request still takes the command's own motor state.
-      const protocol::PositionPowerConfig power{protocol::kPositionMotorPowerReq, 1};
-      try {
-        (void)connection_.request(base_, protocol::encode(power));
-      } catch (const client::TimeoutError&) {
-      }
+    // Off before the stop it implies is sent; on when driving starts, as
+    // playerjoy did (a base without the request still takes the command's
+    // own motor state).
+    if (motors && !*motors) power(false);
+    if (command) {
+      if (starting || (motors && *motors)) power(true);
+      send(*command);
+    } else if (motors && *motors) {
+      power(true);
     }
-    send(*command);
   }
 
   void stop() { send({}); }
 
  private:
+  void power(bool on) {
+    const protocol::PositionPowerConfig request{protocol::kPositionMotorPowerReq, static_cast<std::uint8_t>(on ? 1 : 0)};
+    try {
+      (void)connection_.request(base_, protocol::encode(request));
+    } catch (const client::TimeoutError&) {
+      // No answer: the command that follows still carries the motor state.
+    }
+  }
+
   void send(const DriveCommand& command) {
     client::PositionCommand wanted;
     wanted.velocity = {command.forward, 0.0, command.turn};

@@ -205,7 +205,12 @@ window.addEventListener("keyup", (event) => {
 });
 window.addEventListener("blur", stopDriving);
 document.addEventListener("visibilitychange", () => { if (document.hidden) stopDriving(); });
-for (const button of document.querySelectorAll("#pad button")) {
+document.getElementById("motors-on").addEventListener("click", () => send({ type: "motors", on: true }));
+document.getElementById("motors-off").addEventListener("click", () => {
+  stopDriving();
+  send({ type: "motors", on: false });
+});
+for (const button of document.querySelectorAll("#pad button[data-x]")) {
   button.addEventListener("pointerdown", () => {
     padCommand = { x: Number(button.dataset.x), yaw: Number(button.dataset.yaw) };
     driveNow();
