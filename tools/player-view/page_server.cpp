@@ -49,6 +49,7 @@ struct PageServer::Impl {
   std::vector<Shared> greetings;
   Shared latest;
   std::atomic<std::size_t> page_count{0};
+  std::uint16_t port = 0;  // set before the thread starts, read-only after
   std::uint64_t next_page = 1;
   std::mutex events_mutex;
   std::vector<PageEvent> events;
@@ -231,6 +232,7 @@ PageServer::PageServer(const std::string& address, std::uint16_t port, std::vect
   if (!error) acceptor.bind(endpoint, error);
   if (!error) acceptor.listen(asio::socket_base::max_listen_connections, error);
   if (error) throw PageServerError("cannot serve HTTP on " + where + ": " + error.message());
+  impl_->port = acceptor.local_endpoint().port();
 }
 
 PageServer::~PageServer() {
@@ -243,7 +245,9 @@ PageServer::~PageServer() {
   if (impl_->thread.joinable()) impl_->thread.join();
 }
 
-std::uint16_t PageServer::port() const { return impl_->acceptor.local_endpoint().port(); }
+// The acceptor belongs to the server's thread once it runs: the port is
+// kept aside rather than asked of the socket.
+std::uint16_t PageServer::port() const { return impl_->port; }
 
 void PageServer::start() {
   impl_->accept();
