@@ -304,7 +304,9 @@ struct SegwayRmpVanishTest : SegwayRmpDriverTest {
   static emulators::FaultPlan spell() {
     emulators::FaultPlan plan;
     plan.vanish_at = std::chrono::seconds(2);
-    plan.vanish_for = std::chrono::seconds(2);
+    // Long enough that a slow (sanitized, loaded) run still sees the loss
+    // and the robot's watchdog before the line comes back.
+    plan.vanish_for = std::chrono::seconds(5);
     return plan;
   }
 };
@@ -322,8 +324,10 @@ TEST_F(SegwayRmpVanishTest, ALinkThatGoesDeadStopsTheRobotAndComesBack) {
       },
       6s))
       << devices.log.all();
-  EXPECT_TRUE(robot.wait_until([](SegwayRmpEmulator& e) { return e.watchdog_stops() == 1; }));
   EXPECT_FALSE(position().available());
+  // At least once: a slow run may also have let the watchdog stop it
+  // between two of the commands above.
+  EXPECT_TRUE(robot.wait_until([](SegwayRmpEmulator& e) { return e.watchdog_stops() >= 1; }));
   EXPECT_FALSE(devices.log.first_with({"the robot is back"}, 10s).empty()) << devices.log.all();
   EXPECT_TRUE(more_data(position(), 2)) << devices.log.all();
   EXPECT_EQ(counter(position().driver(), "reconnects"), 1u);
