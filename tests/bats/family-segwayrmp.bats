@@ -18,7 +18,9 @@ teardown() {
 
   run --separate-stderr timeout 60 "$player_drivers" probe "$rmp"
   [ "$status" -eq 0 ]
-  [[ "$output" == *"$rmp: segwayrmp at 115200 baud, Segway RMP behind an slcan adapter, 500 kbit/s"* ]]
+  # A pseudo-terminal has no speed: on a slow (sanitized) run the adapter's
+  # first answer may miss the 115200 attempt's window and come at the next rate.
+  [[ "$output" == *"$rmp: segwayrmp at "*" baud, Segway RMP behind an slcan adapter, 500 kbit/s"* ]]
   [[ "$output" == *"    position:0 ( driver \"segwayrmp\" port \"$rmp\" )"* ]]
 
   run --separate-stderr timeout 60 "$player_drivers" run segwayrmp "port=$rmp" -n 2 --format json
