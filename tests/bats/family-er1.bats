@@ -34,15 +34,12 @@ teardown() {
   # 100 mm/s: the sheet's worked example for the mirrored motor 0
   # (trunc(10 x 16819.8), negated), its mirror image for motor 1, and the
   # robot reporting the speed back.
-  run --separate-stderr bash -c "printf '%s\n' \
-    '{\"device\":\"position:0\",\"data\":{\"xspeed\":100}}' \
-    | timeout 60 '$player_drivers' run er1_position 'port=$robot' --stdin -n 40 --format json --trace"
-  [ "$status" -eq 0 ]
-  [[ "$stderr" == *"00 8B 00 11 FF FD 6E FA"* ]]
-  [[ "$stderr" == *"01 55 00 11 00 02 91 06"* ]]
-  [ "$(jq -s '[.[] | select(.data.xspeed >= 90 and .data.xspeed <= 110)] | length' <<<"$output")" -gt 0 ]
+  run_until "a reading at about 100 mm/s" 'select(.data.xspeed >= 90 and .data.xspeed <= 110)' \
+    '{"device":"position:0","data":{"xspeed":100}}' er1_position "port=$robot" --trace
+  grep -q "00 8B 00 11 FF FD 6E FA" "$run_err"
+  grep -q "01 55 00 11 00 02 91 06" "$run_err"
   # Leaving, the driver stopped the motors (STOP_1 to motor 1 on the line).
-  [[ "$stderr" == *"01 CB 00 34 00 00"* ]]
+  grep -q "01 CB 00 34 00 00" "$run_err"
   stop_cleanly "$emulator_pid"
 }
 
@@ -52,21 +49,8 @@ teardown() {
   # only the emulated robot's true pose (--stats) shows which way it went.
   robot="$BATS_TEST_TMPDIR/er1"
   start_emulator "$BATS_TEST_TMPDIR/emulate.out" "$BATS_TEST_TMPDIR/emulate.err" er1 --link "$robot" motor_dir=-1 --stats
-  # The command goes in, then stdin stays open so the run goes on until the
-  # robot has moved 5 cm (a loaded machine may take seconds), within the
-  # wait's deadline; closing stdin ends the run, and the driver stops the robot.
-  readings="$BATS_TEST_TMPDIR/readings.json"
-  mkfifo "$BATS_TEST_TMPDIR/commands"
-  "$player_drivers" run er1_position "port=$robot" motor_dir=-1 --stdin --format json \
-    <"$BATS_TEST_TMPDIR/commands" >"$readings" 2>"$BATS_TEST_TMPDIR/run.err" &
-  run_pid=$!
-  exec 4>"$BATS_TEST_TMPDIR/commands"
-  printf '%s\n' '{"device":"position:0","data":{"xspeed":100}}' >&4
-  moved() { [ "$(jq -s '[.[] | select(.data.xpos >= 50)] | length' "$readings" 2>/dev/null)" -gt 0 ]; }
-  wait_until --pid "$run_pid" --log "$BATS_TEST_TMPDIR/run.err" "a reading 5 cm ahead" moved
-  exec 4>&-
-  wait_for_exit "$run_pid"
-  [ "$exit_status" -eq 0 ]
+  run_until "a reading 5 cm ahead" 'select(.data.xpos >= 50)' '{"device":"position:0","data":{"xspeed":100}}' \
+    er1_position "port=$robot" motor_dir=-1
   # The robot itself went forward: x of at least 0.05 m in a stats line.
   wait_for_line --pid "$emulator_pid" "$BATS_TEST_TMPDIR/emulate.err" \
     'left motor on port 1, at \(([1-9][0-9]*\.[0-9]{2}|0\.(0[5-9]|[1-9][0-9])), '

@@ -8,7 +8,7 @@
 load helpers
 
 teardown() {
-  kill_left_running "${emulator_pid:-}" "${server_pid:-}"
+  kill_left_running "${run_pid:-}" "${emulator_pid:-}" "${server_pid:-}"
 }
 
 @test "a Khepera: emulate, probe, run its position and ir, a velocity command on the line" {
@@ -38,13 +38,11 @@ teardown() {
 
   # Motors on, then 100 mm/s: 12 pulses a wheel per 10 ms on the line
   # ("D,12,12"; 1.5 sent D,8,8) and the robot reports 100 mm/s back.
-  run --separate-stderr bash -c "printf '%s\n' \
-    '{\"device\":\"position:0\",\"request\":\"motor-power\",\"data\":{\"value\":1}}' \
-    '{\"device\":\"position:0\",\"data\":{\"xspeed\":100}}' \
-    | timeout 60 '$player_drivers' run khepera 'port=$robot' --device position:0 --stdin -n 30 --format json --trace"
-  [ "$status" -eq 0 ]
-  [[ "$stderr" == *"44 2C 31 32 2C 31 32 0A"* ]]
-  [ "$(jq -s '[.[] | select(.data.xspeed == 100)] | length' <<<"$output")" -gt 0 ]
+  run_until "a reading at 100 mm/s" 'select(.data.xspeed == 100)' \
+    "$(printf '%s\n' '{"device":"position:0","request":"motor-power","data":{"value":1}}' \
+      '{"device":"position:0","data":{"xspeed":100}}')" \
+    khepera "port=$robot" --device position:0 --trace
+  grep -q "44 2C 31 32 2C 31 32 0A" "$run_err"
   stop_cleanly "$emulator_pid"
 }
 

@@ -8,7 +8,7 @@
 load helpers
 
 teardown() {
-  kill_left_running "${emulator_pid:-}" "${server_pid:-}"
+  kill_left_running "${run_pid:-}" "${emulator_pid:-}" "${server_pid:-}"
 }
 
 # start_nomad: the emulated robot on a free port; sets nomad_port.
@@ -45,10 +45,11 @@ start_nomad() {
 
 @test "a client's velocity goes out as VM, the robot moves, and leaving stops it" {
   start_nomad
-  run --separate-stderr bash -c "printf '%s\n' \
-    '{\"device\":\"nomad:0\",\"data\":{\"vel_trans\":254,\"vel_steer\":0,\"vel_turret\":0}}' \
-    | timeout 60 '$player_drivers' run nomad 'port=tcp:127.0.0.1:$nomad_port' --stdin -n 20 --format json --trace"
-  [ "$status" -eq 0 ]
+  run_until "a reading 10 cm on" 'select(.data.x > 100)' \
+    '{"device":"nomad:0","data":{"vel_trans":254,"vel_steer":0,"vel_turret":0}}' \
+    nomad "port=tcp:127.0.0.1:$nomad_port" --trace
+  stderr=$(cat "$run_err")
+  output=$(cat "$readings")
   # The reference's setup: CONNECT_ROBOT (102), CT, CONF_TM 5, ZR, AC 300s, SP 200/450/450.
   [[ "$stderr" == *"> 00 66 00 02 00 00 00 01"* ]]
   [[ "$stderr" == *"> 00 1A 00 01 00 00 00 05"* ]]

@@ -83,6 +83,36 @@ start_emulator() {
   wait_for_lines --pid "$emulator_pid" --log "$out" --log "$err" "$out" "$wanted"
 }
 
+# run_until WHAT FILTER COMMANDS ARGS...: `player-drivers run ARGS... --stdin
+# --format json` in the background (run_pid), COMMANDS (JSON lines, one
+# string) on its stdin, which stays open until a reading matches the jq
+# FILTER (e.g. 'select(.data.xspeed == 100)'; WHAT names it in the message)
+# within PLAYERKIT_WAIT_TIMEOUT: a loaded machine may take seconds where a
+# fixed count of readings would end too soon. Then stdin is closed, which
+# ends the run, and its exit status must be 0. The readings are in
+# $readings, its stderr in $run_err.
+run_until() {
+  local what=$1 filter=$2 commands=$3
+  shift 3
+  readings="$BATS_TEST_TMPDIR/readings.json"
+  run_err="$BATS_TEST_TMPDIR/run.err"
+  local fifo="$BATS_TEST_TMPDIR/commands.fifo"
+  rm -f "$fifo"
+  mkfifo "$fifo"
+  "$player_drivers" run "$@" --stdin --format json <"$fifo" >"$readings" 2>"$run_err" &
+  run_pid=$!
+  exec 4>"$fifo"
+  printf '%s\n' "$commands" >&4
+  _run_until_matched() { [ "$(jq -s "[.[] | $filter] | length" "$readings" 2>/dev/null)" -gt 0 ]; }
+  if ! wait_until --pid "$run_pid" --log "$run_err" "$what" _run_until_matched; then
+    exec 4>&-
+    return 1
+  fi
+  exec 4>&-
+  wait_for_exit "$run_pid"
+  [ "$exit_status" -eq 0 ]
+}
+
 # stop_cleanly PID: SIGTERM, then the exit status must be 0 (within PLAYERKIT_WAIT_TIMEOUT).
 stop_cleanly() {
   kill -TERM "$1"
