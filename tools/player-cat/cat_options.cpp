@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "device_arguments.hpp"
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::cat {
@@ -21,21 +22,6 @@ TimeStyle parse_time_style(const std::string& text) {
   if (text == "d") return TimeStyle::kDelta;
   if (text == "z") return TimeStyle::kZero;
   throw UsageError("-t '" + text + "': expected a (absolute), d (delta) or z (zero-based)");
-}
-
-std::vector<protocol::DeviceAddress> parse_devices(const std::vector<std::string>& texts) {
-  std::vector<protocol::DeviceAddress> devices;
-  for (const auto& text : texts) {
-    const auto device = protocol::parse_device_address(text);
-    if (!device) {
-      throw UsageError("'" + text + "' is not a device: write interface[:index], e.g. laser:0 or position");
-    }
-    if (std::find(devices.begin(), devices.end(), *device) != devices.end()) {
-      throw UsageError("device " + protocol::to_string(*device) + " is named twice");
-    }
-    devices.push_back(*device);
-  }
-  return devices;
 }
 
 void check_rate(const CatOptions& options) {
@@ -84,7 +70,7 @@ CatOptions make_cat_options(const CommandLine& command_line) {
     throw UsageError(e.what());
   }
   options.server = target.server;
-  options.devices = parse_devices(target.rest);
+  options.devices = tools::parse_device_arguments(target.rest);
   options.list = command_line.list;
   if (options.list && !options.devices.empty()) {
     throw UsageError("--list shows the server's devices: name no devices with it");

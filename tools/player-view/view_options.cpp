@@ -7,25 +7,11 @@
 #include <cstdlib>
 #include <numbers>
 
+#include "device_arguments.hpp"
 #include "protocol/interfaces.hpp"
 
 namespace playerkit::player_view {
 namespace {
-
-std::vector<protocol::DeviceAddress> parse_devices(const std::vector<std::string>& texts) {
-  std::vector<protocol::DeviceAddress> devices;
-  for (const auto& text : texts) {
-    const auto device = protocol::parse_device_address(text);
-    if (!device) {
-      throw UsageError("'" + text + "' is not a device: write interface[:index], e.g. laser:0 or position");
-    }
-    if (std::find(devices.begin(), devices.end(), *device) != devices.end()) {
-      throw UsageError("device " + protocol::to_string(*device) + " is named twice");
-    }
-    devices.push_back(*device);
-  }
-  return devices;
-}
 
 void check_seconds(const std::optional<double>& value, const std::string& flag, bool zero_allowed) {
   if (!value) return;
@@ -152,7 +138,7 @@ ViewOptions make_view_options(const CommandLine& command_line) {
     throw UsageError(e.what());
   }
   options.server = target.server;
-  options.devices = parse_devices(target.rest);
+  options.devices = tools::parse_device_arguments(target.rest);
   parse_output(command_line, options);
   parse_size(command_line.size, options.render);
   if (!std::isfinite(command_line.span) || command_line.span <= 0.0) {
